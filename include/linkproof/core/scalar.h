@@ -1,0 +1,88 @@
+// Arithmetic as a parameter: what generic evaluation code needs to know about a number type.
+//
+// Every algorithm in linkproof that computes with numbers is a template over a scalar T and
+// uses only +, -, *, / and the functions below; ScalarTraits<T> supplies the rest.
+// Supported now:
+//   Rational          exact (CLN cl_RA): a residual is zero or it is not;
+//   double, long double  plain IEEE, for speed (no verdicts are drawn from these);
+//   Tracked<double>, Tracked<long double>  IEEE with a running error bound (see tracked.h),
+//                     used for floating-point verdicts.
+#pragma once
+
+#include <cmath>
+#include <concepts>
+#include <string>
+#include <string_view>
+
+#include "linkproof/core/exact.h"
+#include "linkproof/core/tracked.h"
+
+namespace linkproof {
+
+template <class T>
+struct ScalarTraits;
+
+template <>
+struct ScalarTraits<Rational> {
+  static constexpr bool is_exact = true;
+  static constexpr bool has_error_bound = false;
+  static constexpr std::string_view name = "exact";
+  static Rational from_rational(const Rational& q) { return q; }
+  static bool is_zero(const Rational& x) { return cln::zerop(x); }
+  static Rational abs(const Rational& x) { return cln::abs(x); }
+  static double to_double(const Rational& x) { return cln::double_approx(x); }
+  static std::string to_string(const Rational& x) { return format_rational(x); }
+};
+
+/// Shared by float and Tracked traits: IEEE types rounded from exact rationals.
+template <class F>
+F round_rational(const Rational& q);
+template <>
+double round_rational<double>(const Rational& q);
+template <>
+long double round_rational<long double>(const Rational& q);
+
+/// Shortest decimal form that reads back to the same F ("%.17g" for double).
+template <class F>
+std::string format_float(F x);
+
+template <std::floating_point F>
+struct ScalarTraits<F> {
+  static constexpr bool is_exact = false;
+  static constexpr bool has_error_bound = false;
+  static constexpr std::string_view name = sizeof(F) == sizeof(double) ? "double" : "long double";
+  static F from_rational(const Rational& q) { return round_rational<F>(q); }
+  static bool is_zero(F x) { return x == 0; }
+  static F abs(F x) { return std::abs(x); }
+  static double to_double(F x) { return static_cast<double>(x); }
+  static std::string to_string(F x) { return format_float(x); }
+};
+
+template <std::floating_point F>
+struct ScalarTraits<Tracked<F>> {
+  static constexpr bool is_exact = false;
+  static constexpr bool has_error_bound = true;
+  static constexpr std::string_view name = ScalarTraits<F>::name;
+  /// The midpoint is q rounded to F; the radius is the exact rounding error |q - v|.
+  static Tracked<F> from_rational(const Rational& q);
+  /// Only an exactly zero midpoint with zero radius counts as zero: a construction divides by
+  /// anything else and lets the radius say how much the result can be trusted.
+  static bool is_zero(const Tracked<F>& x) { return x.v == 0 && x.e == 0; }
+  static Tracked<F> abs(const Tracked<F>& x) { return linkproof::abs(x); }
+  static double to_double(const Tracked<F>& x) { return static_cast<double>(x.v); }
+  static std::string to_string(const Tracked<F>& x) { return format_float(x.v); }
+};
+
+/// Shorthands used by generic code.
+template <class T>
+T from_rational(const Rational& q) { return ScalarTraits<T>::from_rational(q); }
+template <class T>
+T from_int(long k) { return ScalarTraits<T>::from_rational(Rational(k)); }
+template <class T>
+bool is_zero(const T& x) { return ScalarTraits<T>::is_zero(x); }
+template <class T>
+T abs_value(const T& x) { return ScalarTraits<T>::abs(x); }
+template <class T>
+std::string to_text(const T& x) { return ScalarTraits<T>::to_string(x); }
+
+}  // namespace linkproof

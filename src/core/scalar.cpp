@@ -1,0 +1,75 @@
+#include "linkproof/core/scalar.h"
+
+#include <cln/float.h>
+#include <cln/integer.h>
+#include <cln/lfloat.h>
+#include <cln/rational.h>
+#include <cln/real.h>
+
+#include <cstdio>
+#include <limits>
+
+namespace linkproof {
+
+template <>
+double round_rational<double>(const Rational& q) {
+  return cln::double_approx(q);
+}
+
+template <>
+long double round_rational<long double>(const Rational& q) {
+  // No long double conversion in CLN: go through a 64-bit-mantissa long float, whose digits
+  // are exact in long double, then round once more (at most one extra half-ulp of long double).
+  const cln::cl_F f = cln::cl_float(q, cln::float_format(std::numeric_limits<long double>::digits10 + 4));
+  const double hi = cln::double_approx(f);
+  const double lo = cln::double_approx(f - cln::cl_float(hi, f));
+  return static_cast<long double>(hi) + static_cast<long double>(lo);
+}
+
+template <class F>
+std::string format_float(F x) {
+  char buf[64];
+  if constexpr (sizeof(F) == sizeof(double)) {
+    std::snprintf(buf, sizeof buf, "%.17g", static_cast<double>(x));
+  } else {
+    std::snprintf(buf, sizeof buf, "%.21Lg", static_cast<long double>(x));
+  }
+  return buf;
+}
+template std::string format_float<double>(double);
+template std::string format_float<long double>(long double);
+
+namespace {
+/// Exact rational value of a finite IEEE number (every binary float is a dyadic rational).
+template <class F>
+Rational exact_value(F x) {
+  int exponent = 0;
+  const F mantissa = std::frexp(x, &exponent);  // x = mantissa * 2^exponent, |mantissa| in [0.5,1)
+  constexpr int digits = std::numeric_limits<F>::digits;
+  const F scaled = std::ldexp(mantissa, digits);  // an integer with `digits` bits
+  // Split into two 32-bit halves to build the integer exactly.
+  const F high = std::floor(scaled / F(4294967296.0));
+  const F low = scaled - high * F(4294967296.0);
+  cln::cl_I m = cln::cl_I(static_cast<long long>(high)) * cln::cl_I(4294967296LL) +
+                cln::cl_I(static_cast<long long>(low));
+  const int shift = exponent - digits;
+  if (shift >= 0) return m * cln::expt_pos(cln::cl_I(2), shift);
+  return m / cln::expt_pos(cln::cl_I(2), -shift);
+}
+}  // namespace
+
+template <std::floating_point F>
+Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {
+  const F v = round_rational<F>(q);
+  if (!std::isfinite(v)) return {v, std::numeric_limits<F>::infinity()};
+  const Rational err = cln::abs(q - exact_value(v));
+  // Round the radius up: its own conversion may lose half an ulp, so add one ulp of it.
+  F e = round_rational<F>(err);
+  e = std::nextafter(e, std::numeric_limits<F>::infinity());
+  if (cln::zerop(err)) e = 0;
+  return {v, e};
+}
+template struct ScalarTraits<Tracked<double>>;
+template struct ScalarTraits<Tracked<long double>>;
+
+}  // namespace linkproof
