@@ -1,0 +1,72 @@
+// A claim: a statement from a paper, its source, what it is expected to do, and how to
+// evaluate its two sides on a polygon in any supported arithmetic.
+//
+// A claim's evaluation returns comparisons (lhs = rhs), never a verdict: the verdict is drawn by
+// the comparator (eval/judge.h), the same for every claim, so that a deliberately wrong formula
+// fed through it is rejected exactly like an erratum. A comparison is one of
+//   instances  the statement itself, once per index j where it is indexed (eq. 4: every j);
+//   terms      the coefficient of one monomial (omega-dot_j, omega_j^2, omega_j omega_l) of an
+//              identity that is a polynomial in the input rates: a wrong term is named.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "linkproof/claims/polygon_context.h"
+#include "linkproof/core/verdict.h"
+
+namespace linkproof {
+
+struct ClaimInfo {
+  std::string id;         ///< e.g. "dijksman1966.eq22", "dijksman1966.eq4.printed"
+  std::string source;     ///< paper, section, equation
+  std::string statement;  ///< the statement, in words and symbols
+  Expectation expected = Expectation::Holds;
+  std::string note;       ///< for erratum readings: what is misread and why it fails
+  int min_n = 4;          ///< the claim applies for min_n <= n <= max_n (0: no upper bound)
+  int max_n = 0;
+  bool applies_to(int n) const { return n >= min_n && (max_n == 0 || n <= max_n); }
+};
+
+template <class T>
+struct Comparison {
+  std::string label;  ///< "j=1", "total", "omega_dot[1]", "omega[1]*omega[2]", ...
+  Defined<T> lhs, rhs;
+};
+
+template <class T>
+struct ClaimSides {
+  std::vector<Comparison<T>> instances;
+  std::vector<Comparison<T>> terms;
+};
+
+/// lhs and rhs evaluated separately: an undefined quantity on one side is reported as such.
+template <class T, class L, class R>
+Comparison<T> compare(std::string label, L&& lhs, R&& rhs) {
+  return {std::move(label), Defined<T>::attempt(std::forward<L>(lhs)), Defined<T>::attempt(std::forward<R>(rhs))};
+}
+
+/// The arithmetics a claim can be evaluated in: exact rationals, and IEEE double and long
+/// double with running error bounds. Adding a type here is the only change a new arithmetic
+/// needs in the claims layer.
+template <class T>
+using ClaimFunction = std::function<ClaimSides<T>(const PolygonContext<T>&)>;
+
+struct Claim {
+  ClaimInfo info;
+  std::tuple<ClaimFunction<Rational>, ClaimFunction<Tracked<double>>, ClaimFunction<Tracked<long double>>> functions;
+
+  template <class T>
+  const ClaimFunction<T>& function() const { return std::get<ClaimFunction<T>>(functions); }
+
+  /// `generic` is a generic callable: [](const auto& context) { ... return ClaimSides<T>; }.
+  template <class F>
+  static Claim make(ClaimInfo info, F generic) {
+    return Claim{std::move(info), {ClaimFunction<Rational>(generic), ClaimFunction<Tracked<double>>(generic),
+                                   ClaimFunction<Tracked<long double>>(generic)}};
+  }
+};
+
+}  // namespace linkproof

@@ -1,0 +1,85 @@
+// Everything a claim about an n-side polygon may refer to, computed once per configuration in
+// scalar type T: the exact ground truth (symbolic engine), the closed forms, the paper's
+// construction for every input side, and the ground truth of each four-bar j solved on its
+// own (the same engine at n = 4, independent of the construction).
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "linkproof/geometry/closed_forms.h"
+#include "linkproof/geometry/construction.h"
+#include "linkproof/symbolic/ground_truth.h"
+
+namespace linkproof {
+
+/// Four-bar j = K'_j K_{n-2} K_{n-1} K_n solved exactly by the engine.
+template <class T>
+struct FourBarTruth {
+  Defined<T> ratio_out = Defined<T>::undefined("", "");  ///< omega_out / omega_in (unit input): eq. (4)'s i_{n-1,j}
+  Defined<T> ratio_cpl = Defined<T>::undefined("", "");  ///< omega_coupler / omega_in: eq. (6)'s i_{n-2,j}
+  Defined<T> omega_out = Defined<T>::undefined("", "");  ///< _j omega_{n-1,n}: output with input (omega_j, omega-dot_j)
+  Defined<T> omega_cpl = Defined<T>::undefined("", "");  ///< _j omega_{n-2,n}
+  Defined<T> omega_dot_out = Defined<T>::undefined("", "");  ///< _j omega-dot_{n-1,n}, eq. (9)
+  Defined<T> omega_dot_cpl = Defined<T>::undefined("", "");  ///< _j omega-dot_{n-2,n}, eq. (11)
+};
+
+template <class T>
+struct PolygonContext {
+  int n = 0;
+  Polygon<T> polygon;
+  InputRates<T> rates;
+  Defined<PolygonMotion<T>> truth = Defined<PolygonMotion<T>>::undefined("", "");
+  Defined<ClosedForms<T>> closed = Defined<ClosedForms<T>>::undefined("", "");
+  /// Exact term coefficients of omega-dot_{n-1,n} (first) and omega-dot_{n-2,n} (second).
+  Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>> coefficients =
+      Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::undefined("", "");
+  std::vector<FourBarConstruction<T>> construction;  ///< j = 1..n-3 at [j-1], correct reading
+  std::vector<FourBarTruth<T>> four_bars;            ///< j = 1..n-3 at [j-1]
+
+  /// Sides and rates by the paper's 1-based indices.
+  Vec2<T> r(int j) const { return polygon.side(j); }
+  const T& omega_in(int j) const { return rates.omega[static_cast<size_t>(j - 1)]; }
+  const T& omega_dot_in(int j) const { return rates.omega_dot[static_cast<size_t>(j - 1)]; }
+  int inputs() const { return n - 3; }
+};
+
+/// The polygon K'_j, K_{n-2}, K_{n-1}, K_n of four-bar j.
+template <class T>
+Polygon<T> make_four_bar_polygon(const Polygon<T>& p, int j) {
+  const int n = p.n();
+  return Polygon<T>({p.joint(n - 2) - p.side(j), p.joint(n - 2), p.joint(n - 1), p.joint(n)});
+}
+
+/// Builds the context in scalar type T from exact input (each exact number is converted once).
+template <class T>
+PolygonContext<T> build_polygon_context(GroundTruthEngine& engine, const Polygon<Rational>& exact,
+                                        const InputRates<Rational>& exact_rates) {
+  PolygonContext<T> c;
+  c.n = exact.n();
+  c.polygon = exact.convert<T>();
+  c.rates = exact_rates.convert<T>();
+  c.truth = Defined<PolygonMotion<T>>::attempt([&] { return engine.motion(c.polygon, c.rates); });
+  c.closed = Defined<ClosedForms<T>>::attempt([&] { return compute_closed_forms(c.polygon); });
+  c.coefficients = Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::attempt(
+      [&] { return engine.coefficients(c.polygon); });
+  const T zero = from_int<T>(0), one = from_int<T>(1);
+  for (int j = 1; j <= c.n - 3; ++j) {
+    c.construction.push_back(construct_four_bar(c.polygon, j));
+    const Polygon<T> fb = make_four_bar_polygon(c.polygon, j);
+    FourBarTruth<T> t;
+    const auto unit = Defined<PolygonMotion<T>>::attempt([&] { return engine.motion(fb, InputRates<T>{{one}, {zero}}); });
+    const auto real = Defined<PolygonMotion<T>>::attempt(
+        [&] { return engine.motion(fb, InputRates<T>{{c.omega_in(j)}, {c.omega_dot_in(j)}}); });
+    t.ratio_out = Defined<T>::attempt([&] { return unit.get().omega[2]; });
+    t.ratio_cpl = Defined<T>::attempt([&] { return unit.get().omega[1]; });
+    t.omega_out = Defined<T>::attempt([&] { return real.get().omega[2]; });
+    t.omega_cpl = Defined<T>::attempt([&] { return real.get().omega[1]; });
+    t.omega_dot_out = Defined<T>::attempt([&] { return real.get().omega_dot[2]; });
+    t.omega_dot_cpl = Defined<T>::attempt([&] { return real.get().omega_dot[1]; });
+    c.four_bars.push_back(std::move(t));
+  }
+  return c;
+}
+
+}  // namespace linkproof
