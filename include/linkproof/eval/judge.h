@@ -1,0 +1,41 @@
+// The comparator: turns the two sides of a comparison into a verdict with its evidence.
+//
+// Exact arithmetic: the residual lhs - rhs is zero (holds) or not (fails); nothing else.
+// Floating point (Tracked<F>): each side carries a running error bound (core/tracked.h), so
+//   tolerance = e_lhs + e_rhs  (+ the rounding of the subtraction itself),
+// a bound on |computed residual - exact residual| derived from the evaluation's own condition.
+//   |residual| > tolerance                    -> fails (the exact sides cannot be equal)
+//   tolerance > sqrt(u) * max(|lhs|, |rhs|)   -> inconclusive (the bound is too wide to confirm
+//                                                agreement: half the digits or more are lost)
+//   non-finite value or unbounded error        -> inconclusive
+//   otherwise                                  -> holds
+// An undefined side gives `undefined`, naming the quantity.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "linkproof/claims/claim.h"
+
+namespace linkproof {
+
+/// The evidence of one comparison, in the arithmetic's own text format.
+struct ComparisonOutcome {
+  std::string label;
+  Verdict verdict = Verdict::Error;
+  std::string lhs, rhs;           ///< empty when undefined
+  std::string residual;           ///< lhs - rhs
+  std::string tolerance;          ///< floating point only: the derived bound
+  double relative_error_bound = 0;  ///< floating point only: tolerance / max(|lhs|, |rhs|)
+  std::string undefined_quantity; ///< for `undefined`: which quantity
+  std::string reason;             ///< for `undefined`/`inconclusive`/`error`: why
+};
+
+/// The rule by which verdicts are drawn in arithmetic T, for reports.
+template <class T>
+std::string tolerance_rule();
+
+template <class T>
+ComparisonOutcome judge(const Comparison<T>& c);
+
+}  // namespace linkproof

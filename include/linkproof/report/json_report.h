@@ -1,0 +1,20 @@
+// JSON renderings of check and sweep results (the CLI's --json). The field names are a
+// contract relied on by outside checks: see README.md, "JSON contract".
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "linkproof/eval/check.h"
+#include "linkproof/eval/sweep.h"
+
+namespace linkproof {
+
+/// {"scene", "arithmetic", "polygon": {"n", "omega": {"1": ..}, "omega_dot": {..}, "D",
+///  "dead_centre"}, "tolerance_rule", "claims": [{"id", "verdict", "expected", "as_expected",
+///  "residual", "lhs", "rhs", "tolerance"?, "undefined_quantity"?, "reason"?, "source",
+///  "statement", "note"?, "instances": [..], "terms": [..]}], "not_applicable", "summary"}
+nlohmann::json to_json(const PolygonCheck& check);
+nlohmann::json to_json(const ComparisonOutcome& c);
+nlohmann::json to_json(const SweepReport& sweep);
+
+}  // namespace linkproof

@@ -1,0 +1,19 @@
+// The linkproof command line, callable in-process (the tests run it this way).
+//   linkproof check SCENE [--arith exact|double|long-double] [--json] [--no-terms]
+//   linkproof sweep --n 4..12 --count N --seed S [--arith ...] [--index I] [--json]
+// Exit codes: 0 every claim as expected, 1 a claim expected to hold failed, 2 bad input,
+// 3 internal error.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace linkproof::cli {
+
+enum ExitCode { kAsExpected = 0, kClaimFailed = 1, kBadInput = 2, kInternalError = 3 };
+
+/// args excludes the program name.
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace linkproof::cli

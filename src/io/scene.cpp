@@ -1,0 +1,314 @@
+#include "linkproof/io/scene.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "linkproof/core/error.h"
+
+namespace linkproof {
+
+namespace {
+
+// Quoted values in messages are cut so that a megabyte-long scalar gives a readable message.
+constexpr std::size_t kMaxQuoted = 60;
+constexpr std::size_t kMaxProblem = 400;
+
+std::string shorten(std::string_view s, std::size_t max) {
+  std::string out;
+  for (char c : s.substr(0, std::min(s.size(), max)))
+    out += std::iscntrl(static_cast<unsigned char>(c)) ? '?' : c;
+  if (s.size() > max) out += fmt::format("... ({} characters)", s.size());
+  return out;
+}
+
+std::string backticked(std::string_view s) { return "`" + shorten(s, kMaxQuoted) + "`"; }
+
+std::string kind_of(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null: return "null (an empty value)";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Scalar: return "the string " + backticked(node.Scalar());
+    default: return "nothing";
+  }
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// YAML 1.1 booleans (what yaml-cpp's own conversion accepts), only for a clearer message:
+// parse_rational would reject them anyway.
+bool is_yaml_boolean(std::string_view s) {
+  const std::string l = lower(s);
+  return l == "true" || l == "false" || l == "yes" || l == "no" || l == "on" || l == "off";
+}
+
+bool is_nan_or_infinity(std::string_view s) {
+  std::string l = lower(s);
+  if (!l.empty() && (l.front() == '+' || l.front() == '-')) l.erase(0, 1);
+  return l == ".nan" || l == "nan" || l == ".inf" || l == "inf" || l == "infinity";
+}
+
+std::string plural(std::size_t k, const char* one, const char* many) {
+  return fmt::format("{} {}", k, k == 1 ? one : many);
+}
+
+// Reads one document; every check throws InputError naming source_, a field and the problem.
+class SceneReader {
+ public:
+  explicit SceneReader(std::string source) : source_(std::move(source)) {}
+
+  PolygonScene read(const YAML::Node& doc) {
+    if (!doc.IsMap())
+      fail("", "expected a map with the fields `name` and `polygon` at the top level, got " +
+                   kind_of(doc));
+    const auto top = fields(doc, "", {"name", "description", "polygon"},
+                            {"mechanism", "mechanism scenes are not supported yet: only `polygon` scenes"});
+
+    PolygonScene scene;
+    scene.source = source_;
+    scene.name = read_name(top);
+    if (auto d = find(top, "description"); d && !d->IsScalar())
+      fail("description", "expected a string (free text), got " + kind_of(*d));
+
+    const auto poly = find(top, "polygon");
+    if (!poly)
+      fail("polygon", "missing required field `polygon`: a map with joints, omega and omega_dot");
+    if (!poly->IsMap())
+      fail("polygon", "expected a map with the fields joints, omega and omega_dot, got " + kind_of(*poly));
+    const auto pf = fields(*poly, "polygon.", {"joints", "omega", "omega_dot"}, {});
+
+    scene.polygon = Polygon<Rational>(read_joints(pf));
+    const int n = scene.polygon.n();
+    scene.rates.omega = read_rates(pf, "omega", "omega", n);
+    scene.rates.omega_dot = read_rates(pf, "omega_dot", "omega-dot", n);
+
+    if (std::string problem = polygon_input_problem(scene.polygon); !problem.empty())
+      fail("polygon.joints", problem);
+    return scene;
+  }
+
+ private:
+  using Fields = std::vector<std::pair<std::string, YAML::Node>>;
+  struct Refused {
+    std::string_view key, message;
+  };
+
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    throw InputError(source_, field, shorten(problem, kMaxProblem));
+  }
+
+  // The entries of a map, checked: plain keys, no repeats, none outside `allowed`. A `refused`
+  // key gets its own message (checked first: it explains more than "unknown field").
+  Fields fields(const YAML::Node& map, const std::string& prefix,
+                std::initializer_list<std::string_view> allowed, Refused refused) const {
+    const std::string where = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
+    Fields out;
+    for (const auto& kv : map) {
+      if (!kv.first.IsScalar())
+        fail(where, "a field name must be a plain string, got " + kind_of(kv.first));
+      out.emplace_back(kv.first.Scalar(), kv.second);
+    }
+    for (const auto& [key, value] : out)
+      if (!refused.key.empty() && key == refused.key) fail(prefix + key, std::string(refused.message));
+    std::string expected;
+    for (auto a : allowed) expected += (expected.empty() ? "" : ", ") + std::string(a);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const std::string& key = out[i].first;
+      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+        fail(prefix + shorten(key, kMaxQuoted),
+             "unknown field " + backticked(key) + "; expected only: " + expected);
+      for (std::size_t k = 0; k < i; ++k)
+        if (out[k].first == key) fail(prefix + key, "field " + backticked(key) + " is given twice");
+    }
+    return out;
+  }
+
+  static std::optional<YAML::Node> find(const Fields& f, std::string_view key) {
+    for (const auto& [k, v] : f)
+      if (k == key) return v;
+    return std::nullopt;
+  }
+
+  std::string read_name(const Fields& top) const {
+    const auto node = find(top, "name");
+    if (!node) fail("name", "missing required field `name`: the scene's name, a non-empty string");
+    if (!node->IsScalar()) fail("name", "expected a non-empty string, got " + kind_of(*node));
+    const std::string& s = node->Scalar();
+    if (std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }))
+      fail("name", "expected a non-empty string, got an empty one");
+    return s;
+  }
+
+  // One exact number; `what` names the quantity in the paper's terms.
+  Rational read_number(const YAML::Node& node, const std::string& field, const std::string& what) const {
+    const std::string expected = "expected an exact number for " + what +
+                                 " (an integer, a fraction \"p/q\" or a decimal), got ";
+    if (!node.IsScalar()) fail(field, expected + kind_of(node));
+    const std::string& s = node.Scalar();  // the text as written: never read through a double
+    const bool plain = node.Tag() == "?";
+    if (plain && is_yaml_boolean(s)) fail(field, expected + "the boolean " + backticked(s));
+    if (is_nan_or_infinity(s))
+      fail(field, expected + backticked(s) + ", which is not finite (NaN and infinities are refused)");
+    try {
+      return parse_rational(s);
+    } catch (const std::invalid_argument& e) {
+      fail(field, "invalid number for " + what + ": " + e.what());
+    }
+  }
+
+  std::vector<Vec2<Rational>> read_joints(const Fields& pf) const {
+    const std::string field = "polygon.joints";
+    const auto node = find(pf, "joints");
+    if (!node)
+      fail(field, "missing required field `joints`: the list [[x, y], ...] of K_1..K_n, n >= 4");
+    if (!node->IsSequence())
+      fail(field, "expected a list of joints [[x, y], ...] (K_1..K_n), got " + kind_of(*node));
+    const std::size_t n = node->size();
+    if (n < 4) fail(field, fmt::format("expected at least 4 joints K_1..K_n (n >= 4), got {}", n));
+    if (n > static_cast<std::size_t>(kMaxSceneJoints))
+      fail(field, fmt::format("expected at most {} joints, got {}", kMaxSceneJoints, n));
+
+    std::vector<Vec2<Rational>> joints;
+    joints.reserve(n);
+    std::size_t i = 0;
+    for (const auto& joint : *node) {
+      const std::string jf = fmt::format("{}[{}]", field, i);
+      const std::string name = fmt::format("K_{}", i + 1);
+      if (!joint.IsSequence())
+        fail(jf, "expected joint " + name + " as a list of 2 numbers [x, y], got " + kind_of(joint));
+      if (joint.size() != 2)
+        fail(jf, fmt::format("expected 2 coordinates [x, y] for joint {}, got {}", name, joint.size()));
+      Vec2<Rational> k;
+      k.x = read_number(joint[0], jf + "[0]", "the x coordinate of " + name);
+      k.y = read_number(joint[1], jf + "[1]", "the y coordinate of " + name);
+      joints.push_back(k);
+      ++i;
+    }
+    return joints;
+  }
+
+  // omega or omega_dot: n-3 numbers, symbol_{j,n} for j = 1..n-3.
+  std::vector<Rational> read_rates(const Fields& pf, const std::string& key, const std::string& symbol,
+                                   int n) const {
+    const std::string field = "polygon." + key;
+    const std::size_t count = static_cast<std::size_t>(n - 3);
+    const std::string meaning = fmt::format("{}_{{j,n}} for j = 1..n-3 with n = {}", symbol, n);
+    const auto node = find(pf, key);
+    if (!node)
+      fail(field, fmt::format("missing required field `{}`: {} ({})", key,
+                              plural(count, "value", "values"), meaning));
+    if (!node->IsSequence())
+      fail(field, fmt::format("expected a list of {} ({}), got {}", plural(count, "number", "numbers"),
+                              meaning, kind_of(*node)));
+    if (node->size() != count)
+      fail(field, fmt::format("expected {} ({}), got {}", plural(count, "value", "values"), meaning,
+                              node->size()));
+    std::vector<Rational> out;
+    out.reserve(count);
+    std::size_t j = 0;
+    for (const auto& value : *node) {
+      out.push_back(read_number(value, fmt::format("{}[{}]", field, j),
+                                fmt::format("{}_{{{},{}}}", symbol, j + 1, n)));
+      ++j;
+    }
+    return out;
+  }
+
+  std::string source_;
+};
+
+// Integers plain; fractions double-quoted so that no YAML reader takes "3/2" for anything else.
+void emit_number(YAML::Emitter& out, const Rational& q) {
+  const std::string text = format_rational(q);
+  if (text.find('/') == std::string::npos)
+    out << text;
+  else
+    out << YAML::DoubleQuoted << text;
+}
+
+void emit_list(YAML::Emitter& out, const std::vector<Rational>& values) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (const auto& v : values) emit_number(out, v);
+  out << YAML::EndSeq;
+}
+
+}  // namespace
+
+PolygonScene parse_polygon_scene(const std::string& yaml_text, const std::string& source) {
+  std::vector<YAML::Node> docs;
+  try {
+    docs = YAML::LoadAll(yaml_text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw InputError(source, fmt::format("(yaml line {}, column {})", e.mark.line + 1, e.mark.column + 1),
+                     fmt::format("the YAML is nested too deeply (the parser stops at {} levels)", e.depth()));
+  } catch (const YAML::ParserException& e) {
+    const std::string where =
+        e.mark.is_null() ? "(yaml)" : fmt::format("(yaml line {}, column {})", e.mark.line + 1, e.mark.column + 1);
+    throw InputError(source, where, "malformed YAML: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source, "(yaml)", std::string("malformed YAML: ") + e.what());
+  }
+  if (docs.empty() || (docs.size() == 1 && docs[0].IsNull()))
+    throw InputError(source, "", "empty document: expected a map with the fields `name` and `polygon`");
+  if (docs.size() > 1)
+    throw InputError(source, "", fmt::format("expected one YAML document, got {} (separated by ---)", docs.size()));
+  try {
+    return SceneReader(source).read(docs[0]);
+  } catch (const YAML::Exception& e) {  // a safety net: the reader only uses non-throwing calls
+    throw InputError(source, "", std::string("cannot read the YAML: ") + e.what());
+  }
+}
+
+PolygonScene load_polygon_scene(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, "", "cannot read file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", std::string("cannot read file: ") + std::strerror(errno));
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(path, "", "cannot read file: read error");
+  return parse_polygon_scene(text, path);
+}
+
+std::string polygon_scene_to_yaml(const PolygonScene& scene) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  out << YAML::Key << "name" << YAML::Value << YAML::DoubleQuoted << scene.name;
+  out << YAML::Key << "polygon" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "joints" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  for (const auto& k : scene.polygon.joints()) {
+    out << YAML::Flow << YAML::BeginSeq;
+    emit_number(out, k.x);
+    emit_number(out, k.y);
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndSeq;
+  out << YAML::Key << "omega" << YAML::Value;
+  emit_list(out, scene.rates.omega);
+  out << YAML::Key << "omega_dot" << YAML::Value;
+  emit_list(out, scene.rates.omega_dot);
+  out << YAML::EndMap << YAML::EndMap;
+  LINKPROOF_ASSERT(out.good(), "YAML emitter failed: " + out.GetLastError());
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace linkproof

@@ -1,0 +1,137 @@
+#include "linkproof/report/json_report.h"
+
+#include <fmt/format.h>
+
+namespace linkproof {
+
+using nlohmann::json;
+
+json to_json(const ComparisonOutcome& c) {
+  json j{{"label", c.label}, {"verdict", std::string(to_string(c.verdict))}};
+  if (c.verdict == Verdict::Undefined) {
+    j["undefined_quantity"] = c.undefined_quantity;
+    j["reason"] = c.reason;
+    return j;
+  }
+  if (c.verdict == Verdict::Error) {
+    j["reason"] = c.reason;
+    return j;
+  }
+  j["lhs"] = c.lhs;
+  j["rhs"] = c.rhs;
+  j["residual"] = c.residual;
+  if (!c.tolerance.empty()) {
+    j["tolerance"] = c.tolerance;
+    j["relative_error_bound"] = c.relative_error_bound;
+  }
+  if (!c.reason.empty()) j["reason"] = c.reason;
+  return j;
+}
+
+namespace {
+
+json rates_object(const std::vector<std::optional<std::string>>& v) {
+  json o = json::object();
+  for (size_t j = 0; j < v.size(); ++j) o[std::to_string(j + 1)] = v[j] ? json(*v[j]) : json(nullptr);
+  return o;
+}
+
+json claim_json(const ClaimOutcome& c) {
+  json j{{"id", c.info.id},
+         {"verdict", std::string(to_string(c.verdict))},
+         {"expected", std::string(to_string(c.info.expected))},
+         {"as_expected", c.is_as_expected()},
+         {"source", c.info.source},
+         {"statement", c.info.statement}};
+  if (!c.info.note.empty()) j["note"] = c.info.note;
+  // The headline comparison's evidence at the top level (the contract's lhs/rhs/residual).
+  for (auto& [k, v] : to_json(c.headline).items())
+    if (k != "label" && k != "verdict") j[k] = v;
+  if (!c.headline.label.empty()) j["headline"] = c.headline.label;
+  if (!c.error.empty()) j["error"] = c.error;
+  j["instances"] = json::array();
+  for (const auto& i : c.instances) j["instances"].push_back(to_json(i));
+  j["terms"] = json::array();
+  for (const auto& t : c.terms) {
+    json tj = to_json(t);
+    tj["monomial"] = t.label;  // lhs: the engine's exact coefficient; rhs: the formula's
+    j["terms"].push_back(std::move(tj));
+  }
+  return j;
+}
+
+json case_json(const RandomPolygonCase& rc) {
+  json joints = json::array();
+  for (const auto& k : rc.polygon.joints()) joints.push_back({format_rational(k.x), format_rational(k.y)});
+  json w = json::array(), wd = json::array();
+  for (const auto& x : rc.rates.omega) w.push_back(format_rational(x));
+  for (const auto& x : rc.rates.omega_dot) wd.push_back(format_rational(x));
+  return {{"seed", rc.seed}, {"n", rc.n}, {"index", rc.index}, {"family", rc.family},
+          {"clockwise_numbering", rc.clockwise_numbering},
+          {"polygon", {{"joints", joints}, {"omega", w}, {"omega_dot", wd}}}};
+}
+
+json example_json(const SweepExample& e) {
+  json j = case_json(e.polygon);
+  j["claim"] = e.claim_id;
+  j["verdict"] = std::string(to_string(e.verdict));
+  j["evidence"] = to_json(e.headline);
+  if (!e.error.empty()) j["error"] = e.error;
+  return j;
+}
+
+}  // namespace
+
+json to_json(const PolygonCheck& check) {
+  json claims = json::array();
+  json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
+               {"unexpected_failures", 0}};
+  for (const auto& c : check.claims) {
+    claims.push_back(claim_json(c));
+    summary[std::string(to_string(c.verdict))] = summary[std::string(to_string(c.verdict))].get<int>() + 1;
+    if (c.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
+  }
+  return {{"scene", check.scene},
+          {"arithmetic", std::string(to_string(check.arithmetic))},
+          {"polygon",
+           {{"n", check.n},
+            {"omega", rates_object(check.omega)},
+            {"omega_dot", rates_object(check.omega_dot)},
+            {"D", check.determinant},
+            {"dead_centre", check.dead_centre}}},
+          {"tolerance_rule", check.tolerance_rule},
+          {"claims", claims},
+          {"not_applicable", check.not_applicable},
+          {"summary", summary},
+          {"exit_status", exit_status(check)}};
+}
+
+json to_json(const SweepReport& s) {
+  json claims = json::array();
+  for (const auto& t : s.tallies)
+    claims.push_back({{"id", t.id},
+                      {"expected", std::string(to_string(t.expected))},
+                      {"holds", t.holds},
+                      {"fails", t.fails},
+                      {"undefined", t.undefined},
+                      {"inconclusive", t.inconclusive},
+                      {"error", t.error},
+                      {"not_applicable", t.not_applicable}});
+  json unexpected = json::array(), disproofs = json::array();
+  for (const auto& e : s.unexpected) unexpected.push_back(example_json(e));
+  for (const auto& e : s.erratum_counterexamples) disproofs.push_back(example_json(e));
+  const auto& o = s.options;
+  return {{"seed", o.seed},
+          {"n", fmt::format("{}..{}", o.n_min, o.n_max)},
+          {"count_per_n", o.count},
+          {"arithmetic", std::string(to_string(o.arithmetic))},
+          {"cases", s.cases},
+          {"seconds", s.seconds},
+          {"tolerance_rule", s.tolerance_rule},
+          {"claims", claims},
+          {"unexpected", unexpected},
+          {"erratum_counterexamples", disproofs},
+          {"exit_status", s.exit_status()}};
+}
+
+}  // namespace linkproof

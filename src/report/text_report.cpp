@@ -1,0 +1,113 @@
+#include "linkproof/report/text_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "linkproof/io/scene.h"
+
+namespace linkproof {
+
+namespace {
+
+std::string value_or_undefined(const std::optional<std::string>& v) { return v ? *v : "undefined"; }
+
+std::string evidence(const ComparisonOutcome& c) {
+  switch (c.verdict) {
+    case Verdict::Undefined: return c.undefined_quantity + " undefined: " + c.reason;
+    case Verdict::Error: return c.reason;
+    default: break;
+  }
+  std::string s = fmt::format("{} = {}  vs  {}", c.label.empty() ? "value" : c.label, c.lhs, c.rhs);
+  if (c.verdict == Verdict::Fails || !c.tolerance.empty()) s += "  residual " + c.residual;
+  if (!c.tolerance.empty()) s += "  tol " + c.tolerance;
+  if (!c.reason.empty()) s += "  (" + c.reason + ")";
+  return s;
+}
+
+std::string polygon_yaml(const RandomPolygonCase& rc) {
+  PolygonScene s;
+  s.name = fmt::format("sweep-seed{}-n{}-i{}", rc.seed, rc.n, rc.index);
+  s.polygon = rc.polygon;
+  s.rates = rc.rates;
+  return polygon_scene_to_yaml(s);
+}
+
+}  // namespace
+
+void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
+  fmt::print(out, "linkproof check: {} (n = {}, {} arithmetic)\n", c.scene, c.n, to_string(c.arithmetic));
+  if (c.dead_centre) {
+    fmt::print(out, "DEAD CENTRE: D = r_{} x r_{} = 0: {}\n", c.n - 2, c.n - 1, c.dead_centre_reason);
+    fmt::print(out, "The ground truth does not exist here; every claim is undefined.\n");
+  }
+  fmt::print(out, "ground truth (loop closure, solved exactly), relative to side {}:\n", c.n);
+  for (int j = 0; j < c.n; ++j)
+    fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j]),
+               value_or_undefined(c.omega_dot[j]));
+  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, c.determinant);
+
+  fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
+  int unexpected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
+  for (const auto& cl : c.claims) {
+    std::string mark = cl.is_as_expected() ? "" : "  <-- UNEXPECTED";
+    fmt::print(out, "{:<34} {:<9} {:<13} {}{}\n", cl.info.id, to_string(cl.info.expected), to_string(cl.verdict),
+               cl.error.empty() ? evidence(cl.headline) : cl.error, mark);
+    if (cl.is_unexpected_failure()) ++unexpected;
+    if (cl.info.expected == Expectation::Holds) {
+      ++true_total;
+      true_held += cl.verdict == Verdict::Holds;
+    } else {
+      ++erratum_total;
+      erratum_failed += cl.verdict == Verdict::Fails;
+    }
+  }
+  if (show_terms) {
+    for (const auto& cl : c.claims) {
+      if (cl.terms.empty() || cl.info.expected != Expectation::Holds) continue;
+      fmt::print(out, "\nterm by term, {} (engine's exact coefficient vs the formula's):\n", cl.info.id);
+      for (const auto& t : cl.terms) {
+        if (t.verdict == Verdict::Undefined)
+          fmt::print(out, "  {:<22} {:<13} {} undefined: {}\n", t.label, to_string(t.verdict), t.undefined_quantity,
+                     t.reason);
+        else
+          fmt::print(out, "  {:<22} {:<13} {:<24} {}\n", t.label, to_string(t.verdict), t.lhs, t.rhs);
+      }
+    }
+  }
+  if (!c.not_applicable.empty()) {
+    fmt::print(out, "\nnot applicable at n = {}:", c.n);
+    for (const auto& id : c.not_applicable) fmt::print(out, " {}", id);
+    fmt::print(out, "\n");
+  }
+  fmt::print(out, "\nverdict rule: {}\n", c.tolerance_rule);
+  fmt::print(out, "summary: {}/{} true claims hold, {}/{} erratum readings fail here, {} unexpected failure(s)\n",
+             true_held, true_total, erratum_failed, erratum_total, unexpected);
+}
+
+void write_text(std::ostream& out, const SweepReport& s) {
+  const auto& o = s.options;
+  fmt::print(out, "linkproof sweep: n = {}..{}, {} per n, seed {}, {} arithmetic: {} polygons in {:.2f} s\n",
+             o.n_min, o.n_max, o.only_index ? 1 : o.count, o.seed, to_string(o.arithmetic), s.cases, s.seconds);
+  fmt::print(out, "{:<34} {:<9} {:>7} {:>7} {:>9} {:>12} {:>6} {:>6}\n", "claim", "expected", "holds", "fails",
+             "undefined", "inconclusive", "error", "n/a");
+  for (const auto& t : s.tallies)
+    fmt::print(out, "{:<34} {:<9} {:>7} {:>7} {:>9} {:>12} {:>6} {:>6}\n", t.id, to_string(t.expected), t.holds,
+               t.fails, t.undefined, t.inconclusive, t.error, t.not_applicable);
+  for (const auto& t : s.tallies)
+    if (t.expected == Expectation::Fails && t.fails == 0 && t.total() > 0)
+      fmt::print(out, "note: erratum reading {} never failed in this sweep\n", t.id);
+  if (s.unexpected.empty()) {
+    fmt::print(out, "\nevery claim expected to hold held or was undefined/inconclusive\n");
+  } else {
+    fmt::print(out, "\nUNEXPECTED: {} case(s) where a claim expected to hold did not:\n", s.unexpected.size());
+    for (const auto& e : s.unexpected) {
+      fmt::print(out, "- {} {} on n = {}, index {} ({}): {}\n", e.claim_id, to_string(e.verdict), e.polygon.n,
+                 e.polygon.index, e.polygon.family, e.error.empty() ? evidence(e.headline) : e.error);
+      fmt::print(out, "  replay: linkproof sweep --n {} --seed {} --index {}\n", e.polygon.n, o.seed, e.polygon.index);
+      fmt::print(out, "  scene (exact):\n{}", polygon_yaml(e.polygon));
+    }
+  }
+  fmt::print(out, "\nverdict rule: {}\n", s.tolerance_rule);
+}
+
+}  // namespace linkproof
