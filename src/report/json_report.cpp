@@ -45,7 +45,8 @@ json claim_json(const ClaimOutcome& c) {
          {"statement", c.info.statement}};
   if (!c.info.note.empty()) j["note"] = c.info.note;
   // The headline comparison's evidence at the top level (the contract's lhs/rhs/residual).
-  for (auto& [k, v] : to_json(c.headline).items())
+  const json headline = to_json(c.headline);  // named: items() must not outlive its json
+  for (const auto& [k, v] : headline.items())
     if (k != "label" && k != "verdict") j[k] = v;
   if (!c.headline.label.empty()) j["headline"] = c.headline.label;
   if (!c.error.empty()) j["error"] = c.error;
