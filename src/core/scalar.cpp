@@ -39,10 +39,8 @@ std::string format_float(F x) {
 template std::string format_float<double>(double);
 template std::string format_float<long double>(long double);
 
-namespace {
-/// Exact rational value of a finite IEEE number (every binary float is a dyadic rational).
 template <class F>
-Rational exact_value(F x) {
+Rational exact_value_of(F x) {
   int exponent = 0;
   const F mantissa = std::frexp(x, &exponent);  // x = mantissa * 2^exponent, |mantissa| in [0.5,1)
   constexpr int digits = std::numeric_limits<F>::digits;
@@ -56,13 +54,14 @@ Rational exact_value(F x) {
   if (shift >= 0) return m * cln::expt_pos(cln::cl_I(2), shift);
   return m / cln::expt_pos(cln::cl_I(2), -shift);
 }
-}  // namespace
+template Rational exact_value_of<double>(double);
+template Rational exact_value_of<long double>(long double);
 
 template <std::floating_point F>
 Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {
   const F v = round_rational<F>(q);
   if (!std::isfinite(v)) return {v, std::numeric_limits<F>::infinity()};
-  const Rational err = cln::abs(q - exact_value(v));
+  const Rational err = cln::abs(q - exact_value_of(v));
   // Round the radius up: its own conversion may lose half an ulp, so add one ulp of it.
   F e = round_rational<F>(err);
   e = std::nextafter(e, std::numeric_limits<F>::infinity());

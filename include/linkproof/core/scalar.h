@@ -42,6 +42,10 @@ double round_rational<double>(const Rational& q);
 template <>
 long double round_rational<long double>(const Rational& q);
 
+/// The exact rational value of a finite IEEE number (every binary float is a dyadic rational).
+template <class F>
+Rational exact_value_of(F x);
+
 /// Shortest decimal form that reads back to the same F ("%.17g" for double).
 template <class F>
 std::string format_float(F x);

@@ -1,0 +1,120 @@
+// The symbolic ground truth against SPEC.md A2's closed forms: exactly on random polygons,
+// and as a rational-function identity in generic symbols.
+#include <gtest/gtest.h>
+
+#include "linkproof/eval/random_polygon.h"
+#include "linkproof/geometry/closed_forms.h"
+#include "linkproof/symbolic/ground_truth.h"
+#include "support/polygons.h"
+
+namespace linkproof {
+namespace {
+
+using test::q;
+
+TEST(GroundTruth, PentagonMatchesSpecA8) {
+  GroundTruthEngine engine;
+  const auto ex = test::spec_pentagon();
+  const auto m = engine.motion(ex.polygon, ex.rates);
+  EXPECT_EQ(m.omega[2], q(17, 11));
+  EXPECT_EQ(m.omega[3], q(3, 11));
+  EXPECT_EQ(m.omega_dot[2], q(7331, 2662));
+  EXPECT_EQ(m.omega_dot[3], q(3755, 1331));
+  EXPECT_EQ(m.omega[4], 0);
+}
+
+TEST(GroundTruth, HexagonMatchesSpecA8) {
+  GroundTruthEngine engine;
+  const auto ex = test::spec_hexagon();
+  const auto m = engine.motion(ex.polygon, ex.rates);
+  EXPECT_EQ(m.omega[3], q(-30, 19));
+  EXPECT_EQ(m.omega[4], q(21, 19));
+  EXPECT_EQ(m.omega_dot[3], q(46033, 6859));
+  EXPECT_EQ(m.omega_dot[4], q(38322, 6859));
+}
+
+TEST(GroundTruth, EqualsClosedFormsOnRandomPolygonsN4To12) {
+  const std::uint64_t seed = 20261121;
+  GroundTruthEngine engine;
+  for (int n = 4; n <= 12; ++n) {
+    for (int i = 0; i < 30; ++i) {
+      const auto rc = generate_random_polygon(seed, n, i);
+      const auto m = engine.motion(rc.polygon, rc.rates);
+      const auto c = compute_closed_form_motion(rc.polygon, rc.rates);
+      for (int j = 0; j < n; ++j) {
+        ASSERT_EQ(m.omega[j], c.omega[j]) << "seed " << seed << " n " << n << " index " << i << " side " << j + 1;
+        ASSERT_EQ(m.omega_dot[j], c.omega_dot[j]) << "seed " << seed << " n " << n << " index " << i;
+      }
+    }
+  }
+}
+
+TEST(GroundTruth, TermCoefficientsMatchSpecA4Structure) {
+  // Coefficient of omega-dot_j is i_{n-1,j}; of omega_j^2 is lambda_j; of omega_j omega_l is
+  // -2[cot phi i_{n-1,j} i_{n-1,l} + (|r_{n-2}|^2/D) i_{n-2,j} i_{n-2,l}] (closed forms).
+  GroundTruthEngine engine;
+  for (int i = 0; i < 10; ++i) {
+    const auto rc = generate_random_polygon(99, 7, i);
+    const auto [c1, c2] = engine.coefficients(rc.polygon);
+    const auto cf = compute_closed_forms(rc.polygon);
+    const int m = 4;
+    for (int j = 1; j <= m; ++j) {
+      EXPECT_EQ(c1.omega_dot[j - 1], cf.i_out[j - 1]);
+      EXPECT_EQ(c1.omega_sq[j - 1], cf.lambda[j - 1]);
+      EXPECT_EQ(c2.omega_dot[j - 1], cf.i_cpl[j - 1]);
+      EXPECT_EQ(c2.omega_sq[j - 1], cf.mu[j - 1]);
+      for (int l = j + 1; l <= m; ++l)
+        EXPECT_EQ(c1.omega_pair[pair_index(j, l, m)],
+                  -2 * (cf.cot_phi * cf.i_out[j - 1] * cf.i_out[l - 1] + cf.rho * cf.i_cpl[j - 1] * cf.i_cpl[l - 1]));
+    }
+  }
+}
+
+TEST(GroundTruth, SymbolicSolutionEqualsClosedFormIdenticallyForN4To6) {
+  // Zero test of (engine - closed form) as a rational function in generic x_j, y_j, omega_j,
+  // omega_dot_j: numerator of the normal form is 0.
+  using namespace GiNaC;
+  for (int n = 4; n <= 6; ++n) {
+    GroundTruthEngine engine;
+    const auto& d = engine.derivation(n);
+    const auto& s = d.symbols;
+    const ex ax = s.x(n - 2), ay = s.y(n - 2), bx = s.x(n - 1), by = s.y(n - 1);
+    const ex D = ax * by - ay * bx;
+    ex w1 = 0, w2 = 0, acc1 = 0;
+    for (int j = 1; j <= n - 3; ++j) {
+      w1 += s.omega(j) * (s.x(j) * ay - s.y(j) * ax);
+      w2 += s.omega(j) * (bx * s.y(j) - by * s.x(j));
+    }
+    w1 /= D;
+    w2 /= D;
+    for (int j = 1; j <= n - 3; ++j)
+      acc1 += s.omega_dot(j) * (s.x(j) * ay - s.y(j) * ax) - pow(s.omega(j), 2) * (ax * s.x(j) + ay * s.y(j));
+    acc1 = (acc1 - pow(w2, 2) * (ax * ax + ay * ay) - pow(w1, 2) * (ax * bx + ay * by)) / D;
+    EXPECT_TRUE((d.solution.omega_n1 - w1).normal().is_zero()) << "n=" << n;
+    EXPECT_TRUE((d.solution.omega_n2 - w2).normal().is_zero()) << "n=" << n;
+    EXPECT_TRUE((d.solution.omega_dot_n1 - acc1).normal().is_zero()) << "n=" << n;
+    EXPECT_TRUE((d.solution.determinant - D).expand().is_zero()) << "n=" << n;
+  }
+}
+
+TEST(GroundTruth, DeadCentreIsReportedAsUndefinedDeterminant) {
+  GroundTruthEngine engine;
+  const Polygon<Rational> p({{0, 0}, {1, 4}, {5, 5}, {7, 3}, {9, 1}});
+  ASSERT_TRUE(cln::zerop(p.dead_centre_determinant()));
+  try {
+    engine.motion(p, InputRates<Rational>{{1, 1}, {0, 0}});
+    FAIL() << "expected UndefinedQuantity";
+  } catch (const UndefinedQuantity& u) {
+    EXPECT_NE(u.quantity().find("D"), std::string::npos);
+  }
+}
+
+TEST(GroundTruth, DerivationSizeGrowsLinearlyInN) {
+  GroundTruthEngine engine;
+  const size_t s24 = engine.derivation(24).motion.size();
+  const size_t s48 = engine.derivation(48).motion.size();
+  EXPECT_LT(s48, 2 * s24 + 64) << "tape sizes " << s24 << " and " << s48;
+}
+
+}  // namespace
+}  // namespace linkproof
