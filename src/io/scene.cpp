@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <initializer_list>
 #include <iterator>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -236,6 +238,21 @@ class SceneReader {
   std::string source_;
 };
 
+// Records where each document starts (the mark of its first token); ignores the content.
+class DocumentStarts final : public YAML::EventHandler {
+ public:
+  std::vector<YAML::Mark> marks;
+  void OnDocumentStart(const YAML::Mark& mark) override { marks.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
 // Integers plain; fractions double-quoted so that no YAML reader takes "3/2" for anything else.
 void emit_number(YAML::Emitter& out, const Rational& q) {
   const std::string text = format_rational(q);
@@ -254,25 +271,44 @@ void emit_list(YAML::Emitter& out, const std::vector<Rational>& values) {
 }  // namespace
 
 PolygonScene parse_polygon_scene(const std::string& yaml_text, const std::string& source) {
-  std::vector<YAML::Node> docs;
+  const auto at = [](const YAML::Mark& m) {
+    return m.is_null() ? std::string("(yaml)") : fmt::format("(yaml line {}, column {})", m.line + 1, m.column + 1);
+  };
+  YAML::Node doc;
   try {
-    docs = YAML::LoadAll(yaml_text);
+    // A first pass finds the document boundaries. It must not be YAML::LoadAll: on a stray
+    // top-level ',' yaml-cpp 0.7 starts an empty document at the same token forever (until
+    // memory runs out). Stopping at the third document and comparing starts catches that.
+    std::istringstream stream(yaml_text);
+    YAML::Parser parser(stream);
+    DocumentStarts starts;
+    while (starts.marks.size() < 3 && parser.HandleNextDocument(starts)) {
+    }
+    const auto& m = starts.marks;
+    for (std::size_t i = 1; i < m.size(); ++i) {
+      if (m[i].pos == m[i - 1].pos) {
+        const auto pos = static_cast<std::size_t>(m[i].pos);
+        const std::string token = pos < yaml_text.size() ? backticked(yaml_text.substr(pos, 1)) : "end";
+        throw InputError(source, at(m[i]), "malformed YAML: unexpected " + token);
+      }
+    }
+    if (m.size() > 1)
+      throw InputError(source, "",
+                       fmt::format("expected one YAML document, found a second one at line {}",
+                                   m[1].line + 1));
+    if (!m.empty()) doc = YAML::Load(yaml_text);
   } catch (const YAML::DeepRecursion& e) {
-    throw InputError(source, fmt::format("(yaml line {}, column {})", e.mark.line + 1, e.mark.column + 1),
+    throw InputError(source, at(e.mark),
                      fmt::format("the YAML is nested too deeply (the parser stops at {} levels)", e.depth()));
   } catch (const YAML::ParserException& e) {
-    const std::string where =
-        e.mark.is_null() ? "(yaml)" : fmt::format("(yaml line {}, column {})", e.mark.line + 1, e.mark.column + 1);
-    throw InputError(source, where, "malformed YAML: " + e.msg);
+    throw InputError(source, at(e.mark), "malformed YAML: " + e.msg);
   } catch (const YAML::Exception& e) {
     throw InputError(source, "(yaml)", std::string("malformed YAML: ") + e.what());
   }
-  if (docs.empty() || (docs.size() == 1 && docs[0].IsNull()))
+  if (doc.IsNull())
     throw InputError(source, "", "empty document: expected a map with the fields `name` and `polygon`");
-  if (docs.size() > 1)
-    throw InputError(source, "", fmt::format("expected one YAML document, got {} (separated by ---)", docs.size()));
   try {
-    return SceneReader(source).read(docs[0]);
+    return SceneReader(source).read(doc);
   } catch (const YAML::Exception& e) {  // a safety net: the reader only uses non-throwing calls
     throw InputError(source, "", std::string("cannot read the YAML: ") + e.what());
   }
