@@ -50,6 +50,8 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
   int unexpected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
   for (const auto& cl : c.claims) {
     std::string mark = cl.is_as_expected() ? "" : "  <-- UNEXPECTED";
+    if (cl.info.expected == Expectation::Fails && cl.verdict == Verdict::Holds)
+      mark = "  (this misreading coincides with the truth on this configuration)";
     fmt::print(out, "{:<34} {:<9} {:<13} {}{}\n", cl.info.id, to_string(cl.info.expected), to_string(cl.verdict),
                cl.error.empty() ? evidence(cl.headline) : cl.error, mark);
     if (cl.is_unexpected_failure()) ++unexpected;

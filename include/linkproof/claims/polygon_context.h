@@ -59,18 +59,30 @@ PolygonContext<T> build_polygon_context(GroundTruthEngine& engine, const Polygon
   c.n = exact.n();
   c.polygon = exact.convert<T>();
   c.rates = exact_rates.convert<T>();
-  c.truth = Defined<PolygonMotion<T>>::attempt([&] { return engine.motion(c.polygon, c.rates); });
-  c.closed = Defined<ClosedForms<T>>::attempt([&] { return compute_closed_forms(c.polygon); });
+  // The input is exact, so the dead centre (the mechanism's only singularity) is decided
+  // exactly, whatever T is: a rounded D must not turn "does not exist" into a huge number.
+  // Four-bar j shares r_{n-2} and r_{n-1}, hence D, so it is at its dead centre too.
+  const bool dead_centre = cln::zerop(exact.dead_centre_determinant());
+  const auto unless_dead_centre = [dead_centre](auto&& f) {
+    if (dead_centre) throw dead_centre_error();
+    return f();
+  };
+  c.truth = Defined<PolygonMotion<T>>::attempt(
+      [&] { return unless_dead_centre([&] { return engine.motion(c.polygon, c.rates); }); });
+  c.closed = Defined<ClosedForms<T>>::attempt(
+      [&] { return unless_dead_centre([&] { return compute_closed_forms(c.polygon); }); });
   c.coefficients = Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::attempt(
-      [&] { return engine.coefficients(c.polygon); });
+      [&] { return unless_dead_centre([&] { return engine.coefficients(c.polygon); }); });
   const T zero = from_int<T>(0), one = from_int<T>(1);
   for (int j = 1; j <= c.n - 3; ++j) {
     c.construction.push_back(construct_four_bar(c.polygon, j));
     const Polygon<T> fb = make_four_bar_polygon(c.polygon, j);
     FourBarTruth<T> t;
-    const auto unit = Defined<PolygonMotion<T>>::attempt([&] { return engine.motion(fb, InputRates<T>{{one}, {zero}}); });
-    const auto real = Defined<PolygonMotion<T>>::attempt(
-        [&] { return engine.motion(fb, InputRates<T>{{c.omega_in(j)}, {c.omega_dot_in(j)}}); });
+    const auto unit = Defined<PolygonMotion<T>>::attempt(
+        [&] { return unless_dead_centre([&] { return engine.motion(fb, InputRates<T>{{one}, {zero}}); }); });
+    const auto real = Defined<PolygonMotion<T>>::attempt([&] {
+      return unless_dead_centre([&] { return engine.motion(fb, InputRates<T>{{c.omega_in(j)}, {c.omega_dot_in(j)}}); });
+    });
     t.ratio_out = Defined<T>::attempt([&] { return unit.get().omega[2]; });
     t.ratio_cpl = Defined<T>::attempt([&] { return unit.get().omega[1]; });
     t.omega_out = Defined<T>::attempt([&] { return real.get().omega[2]; });

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Tests the installed package: installs an already-built linkproof build tree into a temporary
+# prefix, then configures, builds and runs the consumer project tests/consumer against it with
+# find_package(linkproof). The build tree is only read; everything else lives in temporary
+# directories that are removed on exit.
+#   scripts/test_consumer.sh [BUILD_DIR]     (default: build; relative to the current directory)
+set -euo pipefail
+build_arg="${1:-build}"
+# Resolve the build directory before leaving the caller's directory.
+if [[ ! -d "$build_arg" ]]; then
+  echo "test_consumer: ERROR: build directory '$build_arg' does not exist (build first)" >&2
+  exit 2
+fi
+build_dir="$(cd "$build_arg" && pwd)"
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+repo_root="$(pwd)"
+
+prefix="$(mktemp -d "${TMPDIR:-/tmp}/linkproof-prefix.XXXXXX")"
+consumer_build="$(mktemp -d "${TMPDIR:-/tmp}/linkproof-consumer.XXXXXX")"
+cleanup() { rm -rf -- "$prefix" "$consumer_build"; }
+trap cleanup EXIT
+
+# Build the consumer with the compiler and build type of the installed tree.
+cache="$build_dir/CMakeCache.txt"
+cmake_args=()
+compiler="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$cache" 2>/dev/null | head -n1)"
+[[ -n "$compiler" ]] && cmake_args+=("-DCMAKE_CXX_COMPILER=$compiler")
+build_type="$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$cache" 2>/dev/null | head -n1)"
+[[ -n "$build_type" ]] && cmake_args+=("-DCMAKE_BUILD_TYPE=$build_type")
+
+echo "==> test_consumer: cmake --install $build_dir --prefix $prefix"
+cmake --install "$build_dir" --prefix "$prefix"
+if [[ ! -x "$prefix/bin/linkproof" ]]; then
+  echo "test_consumer: ERROR: the install did not provide bin/linkproof" >&2
+  exit 1
+fi
+
+echo "==> test_consumer: cmake -S tests/consumer -B $consumer_build -DCMAKE_PREFIX_PATH=$prefix ${cmake_args[*]}"
+cmake -S "$repo_root/tests/consumer" -B "$consumer_build" \
+  -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON "${cmake_args[@]}"
+
+# The package must come from the fresh install, not from some other linkproof on the system.
+found_dir="$(sed -n 's/^linkproof_DIR:[A-Z]*=//p' "$consumer_build/CMakeCache.txt")"
+echo "==> test_consumer: find_package(linkproof) used $found_dir"
+if [[ "$found_dir" != "$prefix"/* ]]; then
+  echo "test_consumer: ERROR: linkproof was found outside the test prefix $prefix" >&2
+  exit 1
+fi
+
+echo "==> test_consumer: cmake --build $consumer_build -j$(nproc)"
+cmake --build "$consumer_build" -j"$(nproc)"
+
+echo "==> test_consumer: $consumer_build/linkproof_consumer"
+rc=0
+"$consumer_build/linkproof_consumer" || rc=$?
+echo "==> test_consumer: consumer exited with ${rc}"
+exit "${rc}"
