@@ -13,6 +13,16 @@ ex cross2(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * 
 
 }  // namespace
 
+namespace {
+/// One traversal (e.has(x) per symbol would cost O(n) traversals).
+bool has_any_of(const ex& e, const exset& symbols) {
+  if (is_a<symbol>(e)) return symbols.count(e) > 0;
+  for (size_t i = 0; i < e.nops(); ++i)
+    if (has_any_of(e.op(i), symbols)) return true;
+  return false;
+}
+}  // namespace
+
 size_t expression_tree_size(const ex& e) {
   size_t s = 1;
   for (size_t i = 0; i < e.nops(); ++i) s += expression_tree_size(e.op(i));
@@ -43,6 +53,8 @@ LoopSolution derive_loop_solution(const PolygonSymbols& s) {
   }
 
   // L_j cos(theta_j) = x_j, L_j sin(theta_j) = y_j: the trigonometric form becomes polynomial.
+  exset lengths;
+  for (int j = 1; j <= n; ++j) lengths.insert(s.length(j));
   exmap to_components;
   for (int j = 1; j <= n; ++j) {
     to_components[cos(s.theta(j))] = s.x(j) / s.length(j);
@@ -53,9 +65,8 @@ LoopSolution derive_loop_solution(const PolygonSymbols& s) {
     const ex a = d.apply(v);
     sol.velocity[c] = v.subs(to_components, subs_options::no_pattern).expand();
     sol.acceleration[c] = a.subs(to_components, subs_options::no_pattern).expand();
-    for (int j = 1; j <= n; ++j)
-      LINKPROOF_ASSERT(!sol.velocity[c].has(s.length(j)) && !sol.acceleration[c].has(s.length(j)),
-                       "side lengths must cancel after the substitution");
+    LINKPROOF_ASSERT(!has_any_of(sol.velocity[c], lengths) && !has_any_of(sol.acceleration[c], lengths),
+                     "side lengths must cancel after the substitution");
   }
 
   // Velocity: a*omega_{n-2} + b*omega_{n-1} = c, solved by Cramer's rule.
