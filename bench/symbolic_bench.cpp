@@ -1,0 +1,60 @@
+// BM_SymbolicDerivation/n: symbols, loop closure, its two time derivatives, the exact solve and
+// the compiled motion tape (GroundTruthEngine::Derivation does all of it). The derivation is
+// meant to be O(n) (no global simplifier): Complexity() fits the growth across n.
+// BM_LoopSolution/n times the symbols and derive_loop_solution alone, so that the difference
+// between the two is the cost of building the tape inputs and compiling the motion tape.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+#include "linkproof/symbolic/ground_truth.h"
+
+namespace linkproof::bench {
+namespace {
+
+void BM_SymbolicDerivation(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  std::unique_ptr<GroundTruthEngine::Derivation> last;
+  for (auto _ : state) {
+    // Assigning destroys the previous derivation inside the loop: the time per iteration is a
+    // full build-and-release, as in a process that derives each n once.
+    last = std::make_unique<GroundTruthEngine::Derivation>(n);
+    benchmark::DoNotOptimize(last.get());
+  }
+  // Measured after the timed loop, on the last derivation.
+  state.counters["tree_omega_dot_n1"] =
+      benchmark::Counter(static_cast<double>(expression_tree_size(last->solution.omega_dot_n1)));
+  state.counters["tape"] = benchmark::Counter(static_cast<double>(last->motion.size()));
+  state.SetComplexityN(n);
+}
+
+void BM_LoopSolution(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const PolygonSymbols s(n);
+    LoopSolution solution = derive_loop_solution(s);
+    benchmark::DoNotOptimize(solution);
+  }
+  state.SetComplexityN(n);
+}
+
+BENCHMARK(BM_SymbolicDerivation)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(24)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity();
+
+BENCHMARK(BM_LoopSolution)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(24)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity();
+
+}  // namespace
+}  // namespace linkproof::bench
