@@ -42,18 +42,20 @@ void sort_by_angle(std::vector<Vec2<Rational>>& pts) {
 
 std::vector<Vec2<Rational>> draw_joints(SplitMix64& rng, int n, int family) {
   std::vector<Vec2<Rational>> pts;
+  // Ranges grow with n so that large polygons do not run out of distinct joints.
+  const long range = 40 + 2L * n;
   switch (family) {
     case 0:  // scattered
-      for (int k = 0; k < n; ++k) pts.push_back({small_rational(rng, 40, 6), small_rational(rng, 40, 6)});
+      for (int k = 0; k < n; ++k) pts.push_back({small_rational(rng, range, 6), small_rational(rng, range, 6)});
       break;
     case 1:  // star-shaped around the origin
-      for (int k = 0; k < n; ++k) pts.push_back({nonzero_rational(rng, 40, 4), nonzero_rational(rng, 40, 4)});
+      for (int k = 0; k < n; ++k) pts.push_back({nonzero_rational(rng, range, 4), nonzero_rational(rng, range, 4)});
       sort_by_angle(pts);
       break;
     default: {  // convex: rational points ((1-t^2)/(1+t^2) a, 2t/(1+t^2) b) of an ellipse
       const Rational a = rng.uniform(10, 40), b = rng.uniform(10, 40);
       for (int k = 0; k < n; ++k) {
-        const Rational t = small_rational(rng, 6, 7);
+        const Rational t = small_rational(rng, 6 + n / 4, 7 + n / 8);
         const Rational d = 1 + t * t;
         pts.push_back({a * (1 - t * t) / d, b * 2 * t / d});
       }
