@@ -1,0 +1,44 @@
+// linkproof check SCENE [--arith exact|double|long-double] [--json] [--no-terms]
+#include "command.h"
+#include "dijksman1966.h"
+#include "linkproof/eval/check.h"
+#include "linkproof/io/scene.h"
+#include "linkproof/report/json_report.h"
+#include "linkproof/report/text_report.h"
+
+namespace linkproof::cli {
+
+namespace {
+
+struct CheckArgs {
+  std::string scene;
+  std::string arith = "exact";
+  bool json = false;
+  bool no_terms = false;
+};
+
+int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
+  const Arithmetic arith = arithmetic_or_throw(a.arith);
+  const PolygonScene scene = load_polygon_scene(a.scene);
+  GroundTruthEngine engine;
+  const PolygonCheck check =
+      check_polygon(engine, dijksman1966::catalogue(), scene.name, scene.polygon, scene.rates, arith);
+  if (a.json)
+    out << to_json(check).dump(2) << "\n";
+  else
+    write_text(out, check, !a.no_terms);
+  return exit_status(check);
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, Action& action) {
+  auto* c = app.add_subcommand("check", "check every claim on a scene (YAML)");
+  auto& a = bind_action<CheckArgs>(c, action, run_check);
+  c->add_option("scene", a.scene, "scene file, e.g. verify/scenes/pentagon.yaml")->required();
+  c->add_option("--arith", a.arith, "arithmetic: exact (default), double, long-double");
+  c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
+  c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
+}
+
+}  // namespace linkproof::cli

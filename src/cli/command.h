@@ -1,0 +1,43 @@
+// How a subcommand plugs into the linkproof program.
+//
+// Each subcommand lives in its own file (check_command.cpp, sweep_command.cpp, ...) and
+// exposes one `add_<name>_command` function. It declares its options on `app` and, when CLI11
+// has parsed it, stores the action to run in `action`. Parsing and running are separate so that
+// errors of the run (bad scene files, ...) are reported with the run's exit codes, not CLI11's.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <utility>
+
+#include "linkproof/eval/arithmetic.h"
+
+namespace linkproof::cli {
+
+/// The work of one parsed subcommand; returns the exit code.
+using Action = std::function<int(std::ostream& out, std::ostream& err)>;
+
+/// Registers `run(args, out, err)` as the action of `sub` once it is parsed. `args` is owned by
+/// the returned callback, so the options can bind to its fields.
+template <class Args, class Run>
+Args& bind_action(CLI::App* sub, Action& action, Run run) {
+  auto args = std::make_shared<Args>();
+  sub->callback([&action, args, run] {
+    action = [args, run](std::ostream& out, std::ostream& err) { return run(*args, out, err); };
+  });
+  return *args;
+}
+
+/// "--arith" parsed, or an InputError naming the option.
+Arithmetic arithmetic_or_throw(const std::string& s);
+
+/// "N" or "A..B" with lo <= A <= B <= hi, or an InputError naming `option`.
+std::pair<int, int> parse_n_range(const std::string& s, const std::string& option, int lo, int hi);
+
+void add_check_command(CLI::App& app, Action& action);
+void add_sweep_command(CLI::App& app, Action& action);
+
+}  // namespace linkproof::cli
