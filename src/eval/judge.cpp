@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "linkproof/eval/judge.h"
 
 #include <fmt/format.h>
@@ -48,7 +49,7 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
   out.rhs = format_float(r.v);
   out.residual = format_float(res.v);
   out.tolerance = format_float(res.e);
-  const F scale = std::max(std::abs(l.v), std::abs(r.v));
+  const F scale = std::max({std::abs(l.v), std::abs(r.v), static_cast<F>(c.scale)});
   out.relative_error_bound = scale > 0 ? static_cast<double>(res.e / scale) : (res.e == 0 ? 0.0 : HUGE_VAL);
   const F u = Tracked<F>::unit_roundoff();
   if (!std::isfinite(l.v) || !std::isfinite(r.v) || !std::isfinite(res.v)) {
@@ -90,7 +91,8 @@ std::string tracked_rule(const char* name, int bits) {
       "{} (unit roundoff u = 2^-{}) with running error bounds: every value carries a bound on its "
       "distance to the exact result (midpoint-radius arithmetic; inputs rounded from the exact scene). "
       "tolerance = bound(lhs) + bound(rhs), i.e. u times the condition of both evaluations. "
-      "fails iff |lhs - rhs| > tolerance; inconclusive if tolerance > sqrt(u) max(|lhs|, |rhs|) or a "
+      "fails iff |lhs - rhs| > tolerance; inconclusive if tolerance > sqrt(u) max(|lhs|, |rhs|) (for one coefficient of a polynomial in "
+      "the rates: its largest coefficient) or a "
       "bound is unbounded; holds otherwise",
       name, bits);
 }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "linkproof/core/error.h"
+#include "linkproof/io/yaml_document.h"
 
 namespace linkproof {
 
@@ -238,21 +239,6 @@ class SceneReader {
   std::string source_;
 };
 
-// Records where each document starts (the mark of its first token); ignores the content.
-class DocumentStarts final : public YAML::EventHandler {
- public:
-  std::vector<YAML::Mark> marks;
-  void OnDocumentStart(const YAML::Mark& mark) override { marks.push_back(mark); }
-  void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
-  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
-  void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
-  void OnMapEnd() override {}
-};
-
 // Integers plain; fractions double-quoted so that no YAML reader takes "3/2" for anything else.
 void emit_number(YAML::Emitter& out, const Rational& q) {
   const std::string text = format_rational(q);
@@ -271,40 +257,7 @@ void emit_list(YAML::Emitter& out, const std::vector<Rational>& values) {
 }  // namespace
 
 PolygonScene parse_polygon_scene(const std::string& yaml_text, const std::string& source) {
-  const auto at = [](const YAML::Mark& m) {
-    return m.is_null() ? std::string("(yaml)") : fmt::format("(yaml line {}, column {})", m.line + 1, m.column + 1);
-  };
-  YAML::Node doc;
-  try {
-    // A first pass finds the document boundaries. It must not be YAML::LoadAll: on a stray
-    // top-level ',' yaml-cpp 0.7 starts an empty document at the same token forever (until
-    // memory runs out). Stopping at the third document and comparing starts catches that.
-    std::istringstream stream(yaml_text);
-    YAML::Parser parser(stream);
-    DocumentStarts starts;
-    while (starts.marks.size() < 3 && parser.HandleNextDocument(starts)) {
-    }
-    const auto& m = starts.marks;
-    for (std::size_t i = 1; i < m.size(); ++i) {
-      if (m[i].pos == m[i - 1].pos) {
-        const auto pos = static_cast<std::size_t>(m[i].pos);
-        const std::string token = pos < yaml_text.size() ? backticked(yaml_text.substr(pos, 1)) : "end";
-        throw InputError(source, at(m[i]), "malformed YAML: unexpected " + token);
-      }
-    }
-    if (m.size() > 1)
-      throw InputError(source, "",
-                       fmt::format("expected one YAML document, found a second one at line {}",
-                                   m[1].line + 1));
-    if (!m.empty()) doc = YAML::Load(yaml_text);
-  } catch (const YAML::DeepRecursion& e) {
-    throw InputError(source, at(e.mark),
-                     fmt::format("the YAML is nested too deeply (the parser stops at {} levels)", e.depth()));
-  } catch (const YAML::ParserException& e) {
-    throw InputError(source, at(e.mark), "malformed YAML: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    throw InputError(source, "(yaml)", std::string("malformed YAML: ") + e.what());
-  }
+  const YAML::Node doc = parse_yaml_document(yaml_text, source);
   if (doc.IsNull())
     throw InputError(source, "", "empty document: expected a map with the fields `name` and `polygon`");
   try {
@@ -314,16 +267,7 @@ PolygonScene parse_polygon_scene(const std::string& yaml_text, const std::string
   }
 }
 
-PolygonScene load_polygon_scene(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, "", "cannot read file: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", std::string("cannot read file: ") + std::strerror(errno));
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(path, "", "cannot read file: read error");
-  return parse_polygon_scene(text, path);
-}
+PolygonScene load_polygon_scene(const std::string& path) { return parse_polygon_scene(read_text_file(path), path); }
 
 std::string polygon_scene_to_yaml(const PolygonScene& scene) {
   YAML::Emitter out;

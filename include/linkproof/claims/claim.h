@@ -34,6 +34,10 @@ template <class T>
 struct Comparison {
   std::string label;  ///< "j=1", "total", "omega_dot[1]", "omega[1]*omega[2]", ...
   Defined<T> lhs, rhs;
+  /// Floating point: the magnitude the error bound is judged against, if larger than
+  /// max(|lhs|, |rhs|). For one coefficient of a polynomial it is the polynomial's largest
+  /// coefficient: a coefficient that is exactly 0 is then confirmed to the polynomial's accuracy.
+  double scale = 0;
 };
 
 template <class T>

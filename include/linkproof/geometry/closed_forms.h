@@ -41,7 +41,7 @@ ClosedForms<T> compute_closed_forms(const Polygon<T>& p) {
   const Vec2<T> a = p.side(n - 2), b = p.side(n - 1);
   ClosedForms<T> c;
   c.D = cross(a, b);
-  if (is_zero(c.D)) throw dead_centre_error();
+  if (linkproof::is_zero(c.D)) throw dead_centre_error();
   const T ab = dot(a, b), aa = norm2(a), bb = norm2(b);
   c.cot_phi = ab / c.D;
   c.rho = aa / c.D;
@@ -64,7 +64,7 @@ PolygonMotion<T> compute_closed_form_motion(const Polygon<T>& p, const InputRate
   const int n = p.n();
   const Vec2<T> a = p.side(n - 2), b = p.side(n - 1);
   const T D = cross(a, b);
-  if (is_zero(D)) throw dead_centre_error();
+  if (linkproof::is_zero(D)) throw dead_centre_error();
   T w_n1 = from_int<T>(0), w_n2 = from_int<T>(0), acc_n1 = from_int<T>(0), acc_n2 = from_int<T>(0);
   for (int j = 1; j <= n - 3; ++j) {
     const Vec2<T> r = p.side(j);

@@ -64,7 +64,7 @@ Vec2<T> construct_line_intersection(const Vec2<T>& p, const Vec2<T>& u, const Ve
   if (is_zero_vector(u) || is_zero_vector(v))
     throw UndefinedQuantity(name, "a line through " + lines + " has coincident points");
   const T den = cross(u, v);
-  if (is_zero(den)) throw UndefinedQuantity(name, "lines " + lines + " are parallel: the point is at infinity");
+  if (linkproof::is_zero(den)) throw UndefinedQuantity(name, "lines " + lines + " are parallel: the point is at infinity");
   const T t = cross(q - p, v) / den;
   return p + t * u;
 }
@@ -75,7 +75,7 @@ template <class T>
 T compute_directed_ratio(const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>& b, const std::string& name) {
   const Vec2<T> xb = b - x;
   const T den = norm2(xb);
-  if (is_zero(den)) throw UndefinedQuantity(name, "the reference segment has zero length");
+  if (linkproof::is_zero(den)) throw UndefinedQuantity(name, "the reference segment has zero length");
   return dot(a - x, xb) / den;
 }
 
@@ -87,7 +87,7 @@ T compute_cot_signed_angle(const Vec2<T>& va, const Vec2<T>& vb, const std::stri
   if (is_zero_vector(va) || is_zero_vector(vb))
     throw UndefinedQuantity(name, "a ray of " + rays + " is null (its end coincides with the vertex)");
   const T s = cross(va, vb);
-  if (is_zero(s)) throw UndefinedQuantity(name, rays + " are collinear: the angle is 0 or pi, its cotangent infinite");
+  if (linkproof::is_zero(s)) throw UndefinedQuantity(name, rays + " are collinear: the angle is 0 or pi, its cotangent infinite");
   return dot(va, vb) / s;
 }
 

@@ -23,7 +23,14 @@ template <class T> T norm2(const Vec2<T>& a) { return dot(a, a); }
 /// J a: a turned by +90 degrees (counter-clockwise).
 template <class T> Vec2<T> perp(const Vec2<T>& a) { return {-a.y, a.x}; }
 
-template <class T> bool is_zero_vector(const Vec2<T>& a) { return is_zero(a.x) && is_zero(a.y); }
+/// Both components zero. For symbolic coordinates one zero test of |a|^2 (zero over the reals
+/// iff a = 0), so that a proof records "these two points coincide", not "one coordinate is 0".
+template <class T> bool is_zero_vector(const Vec2<T>& a) {
+  if constexpr (requires { ScalarTraits<T>::is_symbolic; })
+    return linkproof::is_zero(a.x * a.x + a.y * a.y);
+  else
+    return linkproof::is_zero(a.x) && linkproof::is_zero(a.y);
+}
 
 /// Converts an exact vector to scalar type T.
 template <class T> Vec2<T> vec_from_rational(const Vec2<Rational>& a) {

@@ -89,7 +89,7 @@ class TapeEvaluator {
         }
         case Tape::Op::Quotient: {
           const T& den = registers_[in.b];
-          if (is_zero(den))
+          if (linkproof::is_zero(den))
             throw UndefinedQuantity(tape_->denominator_name(), "division by zero in the symbolic solution");
           registers_[i] = registers_[in.a] / den;
           break;

@@ -1,0 +1,59 @@
+// A claim expression: text in the vocabulary of vocabulary.h, checked and parsed into a GiNaC
+// expression (GiNaC's own parser does the parsing; `i_out[j]` is read as the function call
+// i_out(j)).
+//
+// Before GiNaC sees the text, a scanner checks it with positions, because GiNaC's parser
+// reports neither line nor column reliably: unknown names, a wrong number of arguments, an
+// index outside [ ], j or l where no sum binds them, unbalanced brackets, a missing operand,
+// decimal numbers (GiNaC reads 0.5 as a float; claims are exact: write 1/2). Every error is an
+// InputError whose source is "FILE:LINE:COLUMN" of the offending character.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <functional>
+#include <string>
+#include <utility>
+
+namespace linkproof {
+
+/// Where a character of an expression is in its file: (line, column), both 1-based.
+using PositionMap = std::function<std::pair<int, int>(size_t offset)>;
+
+/// A position map for text that stands alone: line 1 + newlines, column from the line start.
+PositionMap standalone_positions(const std::string& text);
+
+struct ExpressionContext {
+  std::string file = "<expression>";  ///< for error messages
+  std::string field = "expression";   ///< e.g. "claims[3].rhs"
+  bool j_is_free = false;             ///< `for_each: j`: j may be used outside sums
+};
+
+class ClaimExpression {
+ public:
+  /// Checks and parses `text`; throws InputError naming file:line:column, the field and the problem.
+  static ClaimExpression parse(const std::string& text, const ExpressionContext& context,
+                               const PositionMap& positions);
+  static ClaimExpression parse(const std::string& text, const ExpressionContext& context = {}) {
+    return parse(text, context, standalone_positions(text));
+  }
+
+  const std::string& text() const { return text_; }
+  const GiNaC::ex& expression() const { return expression_; }
+
+ private:
+  std::string text_;
+  GiNaC::ex expression_;
+};
+
+/// The GiNaC atoms of the vocabulary (one table, so that symbols keep their identity).
+namespace claim_atoms {
+/// The symbol of a 0-arity word (global quantity or index symbol n, j, l).
+const GiNaC::symbol& symbol_of(int word_code);
+/// The word code of a symbol of the table, or -1.
+int code_of_symbol(const GiNaC::ex& e);
+/// If e is a call of a vocabulary word: its code and arguments; else code -1.
+int code_of_call(const GiNaC::ex& e);
+}  // namespace claim_atoms
+
+}  // namespace linkproof

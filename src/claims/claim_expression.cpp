@@ -1,0 +1,305 @@
+#include "linkproof/claims/claim_expression.h"
+
+#include <cctype>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "linkproof/claims/vocabulary.h"
+#include "linkproof/core/error.h"
+
+namespace GiNaC {
+// A call of a vocabulary word: lp_word1(code, a) and lp_word2(code, a, b). GiNaC leaves them
+// unevaluated (no eval method), so they are plain tree nodes for the claim evaluator.
+DECLARE_FUNCTION_2P(lp_word1)
+DECLARE_FUNCTION_3P(lp_word2)
+REGISTER_FUNCTION(lp_word1, dummy())
+REGISTER_FUNCTION(lp_word2, dummy())
+}  // namespace GiNaC
+
+namespace linkproof {
+
+namespace {
+
+// --- The atom table ---------------------------------------------------------------------------
+
+struct AtomTable {
+  std::map<int, GiNaC::symbol> symbols;
+  GiNaC::symtab symtab;
+  GiNaC::prototype_table prototypes;
+};
+
+template <int Code>
+GiNaC::ex read_call1(const GiNaC::exvector& a) { return GiNaC::lp_word1(Code, a[0]); }
+template <int Code>
+GiNaC::ex read_call2(const GiNaC::exvector& a) { return GiNaC::lp_word2(Code, a[0], a[1]); }
+
+constexpr int kMaxWords = 64;
+
+template <int... Codes>
+void register_readers(AtomTable& t, std::integer_sequence<int, Codes...>) {
+  const auto& words = vocabulary();
+  const auto one = [&](int code, GiNaC::reader_func r1, GiNaC::reader_func r2) {
+    if (code >= static_cast<int>(words.size())) return;
+    const Word& w = words[static_cast<size_t>(code)];
+    if (w.arity == 1) t.prototypes[{w.name, 1}] = r1;
+    if (w.arity == 2) t.prototypes[{w.name, 2}] = r2;
+  };
+  (one(Codes, &read_call1<Codes>, &read_call2<Codes>), ...);
+}
+
+const AtomTable& atoms() {
+  static const AtomTable table = [] {
+    AtomTable t;
+    const auto& words = vocabulary();
+    LINKPROOF_ASSERT(words.size() <= static_cast<size_t>(kMaxWords), "raise kMaxWords");
+    for (const Word& w : words)
+      if (w.arity == 0) {
+        GiNaC::symbol s(w.name);
+        t.symbols.emplace(word_code(w), s);
+        t.symtab[w.name] = s;
+      }
+    register_readers(t, std::make_integer_sequence<int, kMaxWords>{});
+    return t;
+  }();
+  return table;
+}
+
+// --- The scanner ------------------------------------------------------------------------------
+
+enum class Tok { Name, Number, Op, Open, Close, Comma, End };
+
+struct Token {
+  Tok kind;
+  std::string text;
+  size_t offset;
+};
+
+class Scanner {
+ public:
+  Scanner(const std::string& text, const ExpressionContext& c, const PositionMap& pos)
+      : text_(text), context_(c), positions_(pos) {}
+
+  void run() {
+    tokenize();
+    size_t i = 0;
+    std::set<std::string> bound;
+    if (context_.j_is_free) bound.insert("j");
+    expression(i, bound, /*in_index=*/false);
+    if (tokens_[i].kind != Tok::End) fail(tokens_[i].offset, "unexpected '" + tokens_[i].text + "'");
+  }
+
+ private:
+  [[noreturn]] void fail(size_t offset, const std::string& problem) const {
+    const auto [line, column] = positions_(offset);
+    throw InputError(context_.file + ":" + std::to_string(line) + ":" + std::to_string(column), context_.field, problem);
+  }
+
+  void tokenize() {
+    size_t i = 0;
+    while (i < text_.size()) {
+      const char ch = text_[i];
+      if (std::isspace(static_cast<unsigned char>(ch))) { ++i; continue; }
+      const size_t start = i;
+      if (std::isalpha(static_cast<unsigned char>(ch)) || ch == '_') {
+        while (i < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i])) || text_[i] == '_')) ++i;
+        tokens_.push_back({Tok::Name, text_.substr(start, i - start), start});
+      } else if (std::isdigit(static_cast<unsigned char>(ch))) {
+        while (i < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i]))) ++i;
+        if (i < text_.size() && (text_[i] == '.' || text_[i] == 'e' || text_[i] == 'E'))
+          fail(start, "'" + text_.substr(start, i - start + 1) +
+                          "...' is a decimal number, which GiNaC reads as a float: claims are exact, write a fraction such as 1/2");
+        tokens_.push_back({Tok::Number, text_.substr(start, i - start), start});
+      } else if (std::string("+-*/^").find(ch) != std::string::npos) {
+        tokens_.push_back({Tok::Op, std::string(1, ch), i++});
+      } else if (ch == '(' || ch == '[') {
+        tokens_.push_back({Tok::Open, std::string(1, ch), i++});
+      } else if (ch == ')' || ch == ']') {
+        tokens_.push_back({Tok::Close, std::string(1, ch), i++});
+      } else if (ch == ',') {
+        tokens_.push_back({Tok::Comma, ",", i++});
+      } else {
+        fail(i, std::string("unexpected character '") + ch + "'");
+      }
+    }
+    tokens_.push_back({Tok::End, "end of expression", text_.size()});
+  }
+
+  // expression := ['+'|'-'] operand (op ['+'|'-'] operand)*
+  void expression(size_t& i, const std::set<std::string>& bound, bool in_index) {
+    for (;;) {
+      while (tokens_[i].kind == Tok::Op && (tokens_[i].text == "-" || tokens_[i].text == "+")) ++i;
+      operand(i, bound, in_index);
+      if (tokens_[i].kind != Tok::Op) return;
+      const Token& op = tokens_[i++];
+      if (tokens_[i].kind == Tok::Op && tokens_[i].text != "-" && tokens_[i].text != "+")
+        fail(tokens_[i].offset, "'" + tokens_[i].text + "' right after '" + op.text + "': an operand is missing");
+      if (tokens_[i].kind == Tok::End || tokens_[i].kind == Tok::Close || tokens_[i].kind == Tok::Comma)
+        fail(tokens_[i].offset, "an operand is missing after '" + op.text + "'");
+    }
+  }
+
+  void operand(size_t& i, const std::set<std::string>& bound, bool in_index) {
+    const Token& t = tokens_[i];
+    switch (t.kind) {
+      case Tok::Number: ++i; break;
+      case Tok::Open: {
+        if (t.text == "[") fail(t.offset, "'[' must follow a name that takes an index, as in r[n-1]");
+        ++i;
+        expression(i, bound, in_index);
+        expect_close(i, '(', t.offset);
+        break;
+      }
+      case Tok::Name: name(i, bound, in_index); break;
+      default: fail(t.offset, t.kind == Tok::End ? "the expression ends where an operand is expected"
+                                                 : "'" + t.text + "' where an operand is expected");
+    }
+    if (tokens_[i].kind == Tok::Number || tokens_[i].kind == Tok::Name ||
+        (tokens_[i].kind == Tok::Open && tokens_[i].text == "("))
+      fail(tokens_[i].offset, "an operator is missing before '" + tokens_[i].text + "' (write * for a product)");
+  }
+
+  void expect_close(size_t& i, char open, size_t open_offset) {
+    const char want = open == '(' ? ')' : ']';
+    if (tokens_[i].kind != Tok::Close)
+      fail(tokens_[i].kind == Tok::End ? open_offset : tokens_[i].offset,
+           tokens_[i].kind == Tok::End ? std::string("this '") + open + "' is never closed"
+                                       : "expected '" + std::string(1, want) + "', got '" + tokens_[i].text + "'");
+    if (tokens_[i].text[0] != want)
+      fail(tokens_[i].offset, "'" + tokens_[i].text + "' closes the '" + std::string(1, open) + "' at column " +
+                                  std::to_string(positions_(open_offset).second));
+    ++i;
+  }
+
+  void name(size_t& i, const std::set<std::string>& bound, bool in_index) {
+    const Token& t = tokens_[i++];
+    const bool call = tokens_[i].kind == Tok::Open;
+    if (!call) {
+      const Word* w = find_word(t.text, 0);
+      if (!w) {
+        if (find_word(t.text, 1) || find_word(t.text, 2))
+          fail(t.offset, "'" + t.text + "' needs " + (find_word(t.text, 1) ? "an index or argument, as in " + t.text + "[j]"
+                                                                             : std::string("two arguments")));
+        fail(t.offset, "unknown name '" + t.text + "' (see `linkproof check-claim --vocabulary`)");
+      }
+      if (w->kind == WordKind::Index) {
+        if (!in_index && t.text == "n") fail(t.offset, "'n' may only be used inside an index, as in r[n-1]");
+        if (t.text != "n" && !bound.count(t.text))
+          fail(t.offset, "'" + t.text + "' is not bound here: use it inside sum_j(...)/sum_pairs(...) or with for_each: j");
+        if (!in_index) fail(t.offset, "'" + t.text + "' is an index: use it inside [ ], as in omega[" + t.text + "]");
+      } else if (in_index) {
+        fail(t.offset, "'" + t.text + "' inside an index: an index is built from n, j, l and integers");
+      }
+      return;
+    }
+    const Token& open = tokens_[i++];
+    // Count the arguments.
+    std::vector<size_t> argument_starts{i};
+    const Word* w = nullptr;
+    const bool is_index = open.text == "[";
+    // Look ahead to the matching close to count commas at depth 0.
+    {
+      int depth = 0;
+      size_t k = i;
+      int args = 1;
+      for (; tokens_[k].kind != Tok::End; ++k) {
+        if (tokens_[k].kind == Tok::Open) ++depth;
+        if (tokens_[k].kind == Tok::Close) {
+          if (depth == 0) break;
+          --depth;
+        }
+        if (tokens_[k].kind == Tok::Comma && depth == 0) ++args;
+      }
+      if (k == i) fail(open.offset, "empty " + std::string(is_index ? "index" : "argument list"));
+      w = find_word(t.text, args);
+      if (!w) {
+        const Word* any = find_word(t.text, 1) ? find_word(t.text, 1) : find_word(t.text, 2) ? find_word(t.text, 2)
+                                                                                             : find_word(t.text, 0);
+        if (!any) fail(t.offset, "unknown name '" + t.text + "' (see `linkproof check-claim --vocabulary`)");
+        fail(t.offset, "'" + t.text + "' takes " + std::to_string(any->arity) + " argument(s), not " + std::to_string(args));
+      }
+    }
+    if (in_index) fail(t.offset, "'" + t.text + "' inside an index: an index is built from n, j, l and integers");
+    const bool indexed = w->kind == WordKind::InputScalar || w->kind == WordKind::SideScalar ||
+                         w->kind == WordKind::SideVector || w->kind == WordKind::InputVector;
+    if (indexed && !is_index) fail(open.offset, "'" + t.text + "' is indexed with [ ], as in " + t.text + "[j]");
+    if (!indexed && is_index) fail(open.offset, "'" + t.text + "' is called with ( ), not indexed with [ ]");
+    std::set<std::string> inner = bound;
+    if (w->kind == WordKind::Sum) {
+      const std::vector<std::string> binds = w->name == "sum_j" ? std::vector<std::string>{"j"}
+                                                                : std::vector<std::string>{"j", "l"};
+      for (const auto& b : binds) {
+        if (bound.count(b)) fail(t.offset, "'" + t.text + "' binds " + b + ", which is already bound here");
+        inner.insert(b);
+      }
+    }
+    for (;;) {
+      expression(i, inner, indexed);
+      if (tokens_[i].kind == Tok::Comma) { ++i; continue; }
+      break;
+    }
+    expect_close(i, open.text[0], open.offset);
+  }
+
+  const std::string& text_;
+  const ExpressionContext& context_;
+  const PositionMap& positions_;
+  std::vector<Token> tokens_;
+};
+
+}  // namespace
+
+PositionMap standalone_positions(const std::string& text) {
+  return [text](size_t offset) {
+    int line = 1, column = 1;
+    for (size_t i = 0; i < offset && i < text.size(); ++i) {
+      if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+    }
+    return std::pair<int, int>{line, column};
+  };
+}
+
+ClaimExpression ClaimExpression::parse(const std::string& text, const ExpressionContext& context,
+                                       const PositionMap& positions) {
+  Scanner(text, context, positions).run();
+  std::string ginac_text = text;
+  for (char& ch : ginac_text) {
+    if (ch == '[') ch = '(';
+    if (ch == ']') ch = ')';
+  }
+  ClaimExpression e;
+  e.text_ = text;
+  try {
+    GiNaC::parser reader(atoms().symtab, /*strict=*/true, atoms().prototypes);
+    e.expression_ = reader(ginac_text);
+  } catch (const std::exception& x) {
+    // The scanner accepts only what GiNaC's grammar accepts; reaching here is a scanner gap.
+    const auto [line, column] = positions(0);
+    throw InputError(context.file + ":" + std::to_string(line) + ":" + std::to_string(column), context.field,
+                     std::string("GiNaC could not parse the expression: ") + x.what());
+  }
+  return e;
+}
+
+namespace claim_atoms {
+
+const GiNaC::symbol& symbol_of(int word_code) { return atoms().symbols.at(word_code); }
+
+int code_of_symbol(const GiNaC::ex& e) {
+  if (!GiNaC::is_exactly_a<GiNaC::symbol>(e)) return -1;
+  for (const auto& [code, s] : atoms().symbols)
+    if (e.is_equal(s)) return code;
+  return -1;
+}
+
+int code_of_call(const GiNaC::ex& e) {
+  using namespace GiNaC;
+  if (is_ex_the_function(e, lp_word1) || is_ex_the_function(e, lp_word2))
+    return GiNaC::ex_to<GiNaC::numeric>(e.op(0)).to_int();
+  return -1;
+}
+
+}  // namespace claim_atoms
+
+}  // namespace linkproof

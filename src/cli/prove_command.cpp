@@ -1,0 +1,68 @@
+// linkproof prove [--claim ID] [--n N] [--file CLAIMS.yaml] [--ladder-seconds S] [--json]
+#include <optional>
+
+#include "command.h"
+#include "dijksman1966.h"
+#include "linkproof/report/prove_report.h"
+
+namespace linkproof::cli {
+
+namespace {
+
+struct ProveArgs {
+  std::vector<std::string> claims;
+  std::optional<int> n;
+  std::string file;
+  double ladder_seconds = 1.0;
+  int n_max = 0;
+  bool json = false;
+};
+
+int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
+  const ClaimFile file = a.file.empty() ? dijksman1966::claim_file() : load_claim_file(a.file);
+  if (a.n && (*a.n < 4 || *a.n > kMaxClaimSides))
+    throw InputError("<command line>", "--n", "must be between 4 and " + std::to_string(kMaxClaimSides));
+  if (a.ladder_seconds < 0 || a.ladder_seconds > 3600)
+    throw InputError("<command line>", "--ladder-seconds", "must be between 0 and 3600");
+  std::vector<const DataClaim*> chosen;
+  for (const auto& id : a.claims) {
+    const DataClaim* found = nullptr;
+    for (const auto& c : file.claims)
+      if (c.info.id == id || c.info.id == "dijksman1966." + id) found = &c;
+    if (!found) throw InputError("<command line>", "--claim", "no claim '" + id + "' in " + file.source);
+    chosen.push_back(found);
+  }
+  if (chosen.empty())
+    for (const auto& c : file.claims) chosen.push_back(&c);
+  ProveOptions o;
+  o.only_n = a.n;
+  o.ladder_seconds = a.ladder_seconds;
+  o.n_max = a.n_max;
+  GroundTruthEngine engine;
+  std::vector<ProofResult> results;
+  for (const DataClaim* c : chosen) {
+    if (a.n && !c->info.applies_to(*a.n)) continue;
+    results.push_back(prove_claim(engine, *c, o));
+  }
+  if (results.empty()) throw InputError("<command line>", "--n", "no chosen claim applies to n = " + std::to_string(*a.n));
+  if (a.json)
+    out << to_json(results).dump(2) << "\n";
+  else
+    write_text(out, results);
+  return exit_status(results);
+}
+
+}  // namespace
+
+void add_prove_command(CLI::App& app, Action& action) {
+  auto* p = app.add_subcommand("prove", "prove claims in symbolic coordinates (for every n, or for one n); disprove errata with exact counterexamples");
+  auto& a = bind_action<ProveArgs>(p, action, run_prove);
+  p->add_option("--claim", a.claims, "claim id (repeatable; default: every claim), e.g. dijksman1966.eq22 or eq22");
+  p->add_option("--n", a.n, "prove for this number of sides only");
+  p->add_option("--file", a.file, "claim file (default: the bundled verify/claims/dijksman1966.yaml)");
+  p->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs n = 4, 5, ... per claim (default 1)");
+  p->add_option("--n-max", a.n_max, "stop the per-n ladder at this n");
+  p->add_flag("--json", a.json, "print JSON (the contract in README.md)");
+}
+
+}  // namespace linkproof::cli

@@ -1,0 +1,112 @@
+#include "linkproof/report/prove_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "linkproof/report/json_report.h"
+
+namespace linkproof {
+
+nlohmann::json to_json(const Counterexample& c) {
+  nlohmann::json joints = nlohmann::json::array();
+  for (int k = 1; k <= c.polygon.n(); ++k)
+    joints.push_back({format_rational(c.polygon.joint(k).x), format_rational(c.polygon.joint(k).y)});
+  nlohmann::json w = nlohmann::json::array(), wd = nlohmann::json::array();
+  for (const auto& q : c.rates.omega) w.push_back(format_rational(q));
+  for (const auto& q : c.rates.omega_dot) wd.push_back(format_rational(q));
+  nlohmann::json differing = nlohmann::json::array();
+  for (const auto* group : {&c.outcome.instances, &c.outcome.terms})
+    for (const auto& t : *group)
+      if (t.verdict == Verdict::Fails) differing.push_back(to_json(t));
+  return {{"n", c.polygon.n()},        {"joints", joints},
+          {"omega", w},                {"omega_dot", wd},
+          {"differing", differing},    {"scene_yaml", c.scene_yaml},
+          {"candidates_tried", c.candidates_tried}, {"shrink_steps", c.shrink_steps},
+          {"seconds", c.seconds}};
+}
+
+nlohmann::json to_json(const ProofResult& r) {
+  nlohmann::json j = {{"id", r.id},
+                      {"expected", r.expected == Expectation::Holds ? "holds" : "fails"},
+                      {"verdict", to_string(r.verdict)},
+                      {"as_expected", r.is_as_expected()},
+                      {"scope", r.scope},
+                      {"seconds", r.seconds}};
+  nlohmann::json except = nlohmann::json::array();
+  for (const auto& e : r.except) except.push_back({{"polynomial", e.polynomial}, {"meaning", e.meaning}});
+  j["except"] = except;
+  j["argument"] = r.argument;
+  j["not_local"] = r.not_local;
+  nlohmann::json per_n = nlohmann::json::array();
+  for (const auto& p : r.per_n)
+    per_n.push_back({{"n", p.n}, {"proved", p.proved}, {"monomials", p.monomials}, {"tree_size", p.tree_size},
+                     {"dag_size", p.dag_size}, {"seconds", p.seconds}, {"first_nonzero", p.first_nonzero}});
+  j["per_n"] = per_n;
+  if (r.counterexample) j["counterexample"] = to_json(*r.counterexample);
+  if (r.samples) j["samples"] = r.samples;
+  if (!r.error.empty()) j["error"] = r.error;
+  return j;
+}
+
+nlohmann::json to_json(const std::vector<ProofResult>& results) {
+  nlohmann::json claims = nlohmann::json::array();
+  int as_expected = 0;
+  double seconds = 0;
+  for (const auto& r : results) {
+    claims.push_back(to_json(r));
+    as_expected += r.is_as_expected();
+    seconds += r.seconds;
+  }
+  return {{"claims", claims},
+          {"coordinates", kProofCoordinates},
+          {"summary", {{"claims", results.size()}, {"as_expected", as_expected}, {"seconds", seconds}}}};
+}
+
+void write_text(std::ostream& out, const std::vector<ProofResult>& results) {
+  fmt::print(out, "coordinates: {}\n\n", kProofCoordinates);
+  for (const auto& r : results) {
+    fmt::print(out, "{}  [{}]  {}{}  ({:.3f} s)\n", r.id, r.expected == Expectation::Holds ? "holds" : "fails",
+               to_string(r.verdict), r.scope.empty() ? "" : " for " + r.scope, r.seconds);
+    if (!r.error.empty()) fmt::print(out, "  error: {}\n", r.error);
+    for (const auto& a : r.argument) fmt::print(out, "  {}\n", a);
+    if (!r.not_local.empty()) {
+      fmt::print(out, "  no proof for every n, because:\n");
+      for (const auto& v : r.not_local) fmt::print(out, "    - {}\n", v);
+    }
+    if (!r.except.empty()) {
+      fmt::print(out, "  holds generically, except where (a denominator vanishes):\n");
+      for (const auto& e : r.except) fmt::print(out, "    - {} = 0: {}\n", e.polynomial, e.meaning);
+    }
+    for (const auto& p : r.per_n)
+      fmt::print(out, "  n = {:3}: {:12} {:5} coefficients, tree {:8}, dag {:7}, {:.3f} s{}\n", p.n,
+                 p.proved ? "proved" : "NOT zero", p.monomials, p.tree_size, p.dag_size, p.seconds,
+                 p.first_nonzero.empty() ? "" : "  (first nonzero: " + p.first_nonzero + ")");
+    if (r.counterexample) {
+      const Counterexample& c = *r.counterexample;
+      fmt::print(out, "  counterexample (exact, shrunk in {} steps, {} configurations, {:.3f} s):\n", c.shrink_steps,
+                 c.candidates_tried, c.seconds);
+      std::string text = c.scene_yaml;
+      for (size_t p = 0; (p = text.find('\n', p)) != std::string::npos && p + 1 < text.size(); p += 5) text.replace(p, 1, "\n    ");
+      fmt::print(out, "    {}\n", text);
+      for (const auto* group : {&c.outcome.instances, &c.outcome.terms})
+        for (const auto& t : *group)
+          if (t.verdict == Verdict::Fails)
+            fmt::print(out, "    differs: {}: lhs {} vs rhs {} (residual {})\n", t.label, t.lhs, t.rhs, t.residual);
+    }
+    out << "\n";
+  }
+  int ok = 0;
+  for (const auto& r : results) ok += r.is_as_expected();
+  fmt::print(out, "summary: {}/{} claims as expected\n", ok, results.size());
+}
+
+int exit_status(const std::vector<ProofResult>& results) {
+  int status = 0;
+  for (const auto& r : results) {
+    if (r.verdict == ProofVerdict::Error) return 3;
+    if (!r.is_as_expected()) status = 1;
+  }
+  return status;
+}
+
+}  // namespace linkproof
