@@ -28,7 +28,9 @@ CountingPolygon counting_polygon(int n, std::uint64_t seed) {
     Polygon<Rational> p({{0, 0}, {4, 1}, {1, 3}});
     return {p, side_velocities(p, {}), "triangle (0,0), (4,1), (1,3) (rigid: all rates 0)"};
   }
-  for (int index = 0;; ++index) {
+  // Only the "scattered" family (index = 0 mod 3): it draws in milliseconds at every n, the
+  // convex one runs out of distinct joints beyond n ~ 50 (bench/bench_cases.h).
+  for (int index = 0;; index += 3) {
     RandomPolygonCase c = generate_random_polygon(seed, n, index);
     if (!has_no_dead_centre(c.polygon)) continue;
     return {c.polygon, side_velocities(c.polygon, c.rates),

@@ -24,7 +24,7 @@
 namespace linkproof::dijksman1966 {
 
 /// The polygon on which the fixed-side claims for n sides are evaluated: for n >= 4 the first
-/// random exact polygon of generate_random_polygon(seed, n, index = 0, 1, ...) that is not at a
+/// random exact polygon of generate_random_polygon(seed, n, index = 0, 3, 6, ...) that is not at a
 /// dead centre for any choice of fixed side; for n = 3 a fixed non-degenerate triangle.
 /// Returns the polygon and its side velocities (relative to side n).
 struct CountingPolygon {
