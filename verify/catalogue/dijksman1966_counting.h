@@ -44,7 +44,9 @@ CompoundMechanism fig5_eightbar();
 inline constexpr const char* kFig5Polygons = "1-2-3-4-0,1-5-7-4-0,1-5-6-3-2";
 
 /// Claims for the eight-bar and the A5.5 erratum, for the given loops (the paper's by default).
-/// `notes` receives the erratum statement.
+/// The ranks are judged for any mechanism; the value claims (fig5.omega, fig5.omega_dot_4_0,
+/// fig5.omega_dot_1_2) are the SPEC A8 known answers and so presuppose `m` = fig5_eightbar()
+/// (any loops). `notes` receives the erratum statement. Throws InputError for bad loops.
 std::vector<CountClaim> eightbar_claims(const CompoundMechanism& m, const std::vector<std::vector<int>>& loops,
                                         std::vector<std::string>& notes);
 
