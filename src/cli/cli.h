@@ -1,6 +1,7 @@
 // The linkproof command line, callable in-process (the tests run it this way).
 //   linkproof check SCENE [--arith exact|double|long-double] [--json] [--no-terms]
 //   linkproof sweep --n 4..12 --count N --seed S [--arith ...] [--index I] [--json]
+//   linkproof count --n N|A..B [--json]   |   linkproof count --eightbar [--polygons ...] [--json]
 // Exit codes: 0 every claim as expected, 1 a claim expected to hold failed, 2 bad input,
 // 3 internal error.
 #pragma once

@@ -41,5 +41,6 @@ void add_check_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
 void add_prove_command(CLI::App& app, Action& action);
 void add_check_claim_command(CLI::App& app, Action& action);
+void add_count_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli

@@ -1,0 +1,57 @@
+// The counting claims of Dijksman (1966) sec. 3 (SPEC A7, A5.5) as the catalogue states them.
+#include "dijksman1966_counting.h"
+
+#include <gtest/gtest.h>
+
+namespace linkproof {
+namespace {
+
+TEST(Dijksman1966Counting, EveryClaimForN3To60IsProved) {
+  for (int n = 3; n <= 60; ++n) {
+    const auto claims = dijksman1966::count_claims_for_n(n, 1);
+    ASSERT_EQ(claims.size(), 5u);
+    for (const auto& c : claims) EXPECT_EQ(c.verdict, CountVerdict::Proved) << c.id << ": " << c.reason;
+  }
+}
+
+TEST(Dijksman1966Counting, CountingPolygonsAvoidTheDeadCentreForEveryFixedSide) {
+  for (int n = 3; n <= 30; ++n) {
+    const auto p = dijksman1966::counting_polygon(n, 5);
+    for (int j = 1; j <= n; ++j) EXPECT_FALSE(cln::zerop(cross(p.polygon.side(j), p.polygon.side(j % n + 1)))) << p.origin;
+  }
+}
+
+TEST(Dijksman1966Counting, EightBarClaimsHoldAndThePrintedCountIsDisproved) {
+  std::vector<std::string> notes;
+  const auto loops = parse_polygon_list(dijksman1966::kFig5Polygons, "test", "loops");
+  const auto claims = dijksman1966::eightbar_claims(dijksman1966::fig5_eightbar(), loops, notes);
+  bool printed_seen = false;
+  for (const auto& c : claims) {
+    EXPECT_TRUE(c.as_expected()) << c.id << ": " << c.reason;
+    if (c.id == "dijksman1966.sec3.count.printed") {
+      printed_seen = true;
+      EXPECT_EQ(c.verdict, CountVerdict::Disproved);
+      EXPECT_EQ(c.expected_value, "7");
+      EXPECT_EQ(c.observed_value, "6");
+    }
+    if (c.id == "dijksman1966.fig5.with_polygons") {
+      EXPECT_EQ(c.observed_value, "28");
+    }
+  }
+  EXPECT_TRUE(printed_seen);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("A5.5"), std::string::npos);
+  EXPECT_NE(notes[0].find("28 - 22 = 6"), std::string::npos);
+}
+
+TEST(Dijksman1966Counting, TwoLoopsAreReportedAsNotEnough) {
+  std::vector<std::string> notes;
+  const auto loops = parse_polygon_list("1-2-3-4-0,1-5-7-4-0", "test", "loops");
+  const auto claims = dijksman1966::eightbar_claims(dijksman1966::fig5_eightbar(), loops, notes);
+  int not_as_expected = 0;
+  for (const auto& c : claims) not_as_expected += c.as_expected() ? 0 : 1;
+  EXPECT_GT(not_as_expected, 0);
+}
+
+}  // namespace
+}  // namespace linkproof
