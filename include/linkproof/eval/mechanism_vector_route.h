@@ -57,9 +57,10 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g) {
 }
 
 /// h(q-dot): the acceleration system's right-hand side (everything without omega-dot or
-/// sigma-ddot, moved to the right).
+/// sigma-ddot, moved to the right). `coriolis = false` drops the Coriolis terms: a deliberately
+/// wrong variant, for the claim that they are needed (SPEC C).
 template <class T>
-std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot) {
+std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot, bool coriolis = true) {
   const auto omega = [&](int link) {
     const int c = g.unknown_of_link(link);
     return c < 0 ? from_int<T>(0) : qdot[static_cast<size_t>(c)];
@@ -74,7 +75,7 @@ std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T
       const Vec2<T> r = vec_from_rational<T>(g.joint(next.joint).at - g.joint(c.joint).at);
       const T w = omega(c.to);
       acc = acc + (w * w) * r;
-      if (const int s = g.sliding_sign(c); s != 0) {
+      if (const int s = g.sliding_sign(c); s != 0 && coriolis) {
         const LinkageJoint& j = g.joint(c.joint);
         const T sd = qdot[static_cast<size_t>(g.unknown_of_joint(c.joint))];
         acc = acc - (from_int<T>(2 * s) * omega(j.links[0]) * sd) * perp(vec_from_rational<T>(j.axis));
