@@ -44,7 +44,7 @@ class SceneReader {
       fail("", "expected a map with the fields `name` and `polygon` at the top level, got " +
                    kind_of(doc));
     const auto top = fields(doc, "", {"name", "description", "polygon"},
-                            {"mechanism", "mechanism scenes are not supported yet: only `polygon` scenes"});
+                            {"mechanism", "this is a mechanism scene: read it with load_mechanism_scene (io/mechanism_scene.h); `linkproof check` reads both kinds"});
 
     PolygonScene scene;
     scene.source = source_;
