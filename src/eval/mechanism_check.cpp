@@ -197,8 +197,12 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
   std::vector<MechanismClaim> all = builtin_mechanism_claims();
   for (const MechanismCatalogue& cat : catalogues) {
     all.insert(all.end(), cat.claims.begin(), cat.claims.end());
-    if (cat.tables)
+    if (!cat.tables) continue;
+    try {
       for (auto& t : cat.tables(ctx)) r.tables.push_back(std::move(t));
+    } catch (const UndefinedQuantity& u) {  // e.g. a four-bar at its dead centre
+      r.tables.push_back(ReportTable{cat.name, {{"undefined", u.quantity() + ": " + u.reason()}}});
+    }
   }
   for (const MechanismClaim& c : all) {
     if (c.applies && !c.applies(ctx)) {

@@ -155,3 +155,21 @@ TEST(MechanismCli, DoubleArithmeticReportsDecimalsAndCondition) {
 
 }  // namespace
 }  // namespace linkproof
+
+namespace linkproof {
+namespace {
+
+TEST(MechanismCli, FourBarAtDeadCentreIsRefusedAsBadInputNotAnInternalError) {
+  // B on the line O4-A extended... coupler A-B parallel to rocker O4-B: A = (11, 5), B = (11, 10).
+  std::string text = kFourBar;
+  text = replaced(text, "at: [3, 4]", "at: [11, 5]");
+  text = replaced(text, "  inputs:", "  catalogue: [fourbar_polygon]\n  inputs:");
+  const std::string path = ::testing::TempDir() + "dead_centre_fourbar.yaml";
+  std::ofstream(path) << text;
+  const CliRun r = run_cli({"check", path});
+  EXPECT_EQ(r.code, 2) << r.err;  // the crank input does not fix the motion there
+  EXPECT_NE(r.err.find("do not fix the motion"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace linkproof
