@@ -1,8 +1,12 @@
 // linkproof check SCENE [--arith exact|double|long-double] [--json] [--no-terms]
+// SCENE is a polygon scene (io/scene.h) or a mechanism scene (io/mechanism_scene.h).
 #include "command.h"
 #include "dijksman1966.h"
 #include "linkproof/eval/check.h"
+#include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/scene.h"
+#include "linkproof/report/mechanism_report.h"
+#include "mechanism_catalogues.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/report/text_report.h"
 
@@ -17,8 +21,21 @@ struct CheckArgs {
   bool no_terms = false;
 };
 
+// A mechanism scene (top-level `mechanism:`): the mechanism engine and the scene's catalogues.
+int run_mechanism_check(const CheckArgs& a, Arithmetic arith, const std::string& text, std::ostream& out) {
+  const MechanismScene scene = parse_mechanism_scene(text, a.scene);
+  const MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), arith);
+  if (a.json)
+    out << to_json(check).dump(2) << "\n";
+  else
+    write_text(out, check);
+  return exit_status(check);
+}
+
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   const Arithmetic arith = arithmetic_or_throw(a.arith);
+  if (const std::string text = read_scene_text(a.scene); is_mechanism_scene_text(text))
+    return run_mechanism_check(a, arith, text, out);
   const PolygonScene scene = load_polygon_scene(a.scene);
   GroundTruthEngine engine;
   const PolygonCheck check =

@@ -88,7 +88,10 @@ std::optional<Counterexample> find_counterexample(GroundTruthEngine& engine, con
     if (cln::zerop(p.dead_centre_determinant())) return false;  // the truth does not exist there
     ++cx.candidates_tried;
     ClaimOutcome out = check_data_claim(engine, claim, p, r);
-    if (out.verdict != Verdict::Fails) return false;
+    // The statement itself must fail at these rates, not only a coefficient.
+    bool total_fails = false;
+    for (const auto& i : out.instances) total_fails = total_fails || i.verdict == Verdict::Fails;
+    if (out.verdict != Verdict::Fails || !total_fails) return false;
     if (keep) *keep = std::move(out);
     return true;
   };

@@ -74,6 +74,8 @@ std::vector<std::pair<ex, std::string>> named_degeneracies(const PolygonContext<
   std::vector<std::pair<ex, std::string>> v;
   const int n = c.n;
   const Vec2<ex> a = c.r(n - 2), b = c.r(n - 1);
+  v.emplace_back(norm2(a), "r_{n-2} = 0: coincident joints");
+  v.emplace_back(norm2(b), "r_{n-1} = 0: coincident joints");
   v.emplace_back(cross(a, b), "dead centre: D = r_{n-2} x r_{n-1} = 0 (the mechanism's singularity: the truth is undefined)");
   const auto numerator_of = [](const ex& e) { return GiNaC::numer(GiNaC::normal(e)); };
   for (int j = 1; j <= n - 3; ++j) {
@@ -203,6 +205,10 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
   ProofResult r;
   r.id = claim.info.id;
   r.expected = claim.info.expected;
+  const auto search = [&](const CounterexampleSearch& s) {
+    r.counterexample = find_counterexample(engine, claim, s);
+    if (r.counterexample) r.verdict = ProofVerdict::Disproved;
+  };
   try {
     const int lo = claim.info.min_n;
     const int hi = claim.info.max_n;
@@ -277,6 +283,17 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
       }
     } else if (proved_somewhere) {
       r.verdict = r.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
+    }
+  } catch (const UndefinedQuantity& u) {
+    // No symbolic form (|x| of an expression, for instance): exact instances decide.
+    r.per_n.clear();
+    r.argument = {"no symbolic proof: " + std::string(u.what())};
+    CounterexampleSearch s = o.search;
+    if (o.only_n) s.n_min = s.n_max = *o.only_n;
+    search(s);
+    if (!r.counterexample) {
+      r.verdict = ProofVerdict::Error;
+      r.error = "no symbolic proof and no counterexample: " + std::string(u.what());
     }
   } catch (const std::exception& e) {
     r.verdict = ProofVerdict::Error;

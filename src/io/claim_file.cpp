@@ -5,7 +5,7 @@
 #include <set>
 
 #include "linkproof/core/error.h"
-#include "linkproof/io/yaml_document.h"
+#include "yaml_document.h"
 
 namespace linkproof {
 
@@ -184,8 +184,8 @@ class ClaimFileReader {
 }  // namespace
 
 ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& source) {
-  const YAML::Node doc = parse_yaml_document(yaml_text, source);
-  if (doc.IsNull()) throw InputError(source, "", "empty document: expected a map with the field `claims`");
+  const YAML::Node doc =
+      yaml_io::parse_single_document(yaml_text, source, "empty document: expected a map with the field `claims`");
   try {
     return ClaimFileReader(yaml_text, source).read(doc);
   } catch (const YAML::Exception& e) {
@@ -193,6 +193,6 @@ ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& sour
   }
 }
 
-ClaimFile load_claim_file(const std::string& path) { return parse_claim_file(read_text_file(path), path); }
+ClaimFile load_claim_file(const std::string& path) { return parse_claim_file(yaml_io::read_scene_file(path), path); }
 
 }  // namespace linkproof

@@ -21,54 +21,14 @@
 #include <vector>
 
 #include "linkproof/core/error.h"
-#include "linkproof/io/yaml_document.h"
+#include "yaml_document.h"
 
 namespace linkproof {
 
 namespace {
 
-// Quoted values in messages are cut so that a megabyte-long scalar gives a readable message.
-constexpr std::size_t kMaxQuoted = 60;
-constexpr std::size_t kMaxProblem = 400;
+using namespace yaml_io;
 
-std::string shorten(std::string_view s, std::size_t max) {
-  std::string out;
-  for (char c : s.substr(0, std::min(s.size(), max)))
-    out += std::iscntrl(static_cast<unsigned char>(c)) ? '?' : c;
-  if (s.size() > max) out += fmt::format("... ({} characters)", s.size());
-  return out;
-}
-
-std::string backticked(std::string_view s) { return "`" + shorten(s, kMaxQuoted) + "`"; }
-
-std::string kind_of(const YAML::Node& node) {
-  switch (node.Type()) {
-    case YAML::NodeType::Null: return "null (an empty value)";
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a map";
-    case YAML::NodeType::Scalar: return "the string " + backticked(node.Scalar());
-    default: return "nothing";
-  }
-}
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// YAML 1.1 booleans (what yaml-cpp's own conversion accepts), only for a clearer message:
-// parse_rational would reject them anyway.
-bool is_yaml_boolean(std::string_view s) {
-  const std::string l = lower(s);
-  return l == "true" || l == "false" || l == "yes" || l == "no" || l == "on" || l == "off";
-}
-
-bool is_nan_or_infinity(std::string_view s) {
-  std::string l = lower(s);
-  if (!l.empty() && (l.front() == '+' || l.front() == '-')) l.erase(0, 1);
-  return l == ".nan" || l == "nan" || l == ".inf" || l == "inf" || l == "infinity";
-}
 
 std::string plural(std::size_t k, const char* one, const char* many) {
   return fmt::format("{} {}", k, k == 1 ? one : many);
@@ -84,7 +44,7 @@ class SceneReader {
       fail("", "expected a map with the fields `name` and `polygon` at the top level, got " +
                    kind_of(doc));
     const auto top = fields(doc, "", {"name", "description", "polygon"},
-                            {"mechanism", "mechanism scenes are not supported yet: only `polygon` scenes"});
+                            {"mechanism", "this is a mechanism scene: read it with load_mechanism_scene (io/mechanism_scene.h); `linkproof check` reads both kinds"});
 
     PolygonScene scene;
     scene.source = source_;
@@ -161,21 +121,8 @@ class SceneReader {
     return s;
   }
 
-  // One exact number; `what` names the quantity in the paper's terms.
   Rational read_number(const YAML::Node& node, const std::string& field, const std::string& what) const {
-    const std::string expected = "expected an exact number for " + what +
-                                 " (an integer, a fraction \"p/q\" or a decimal), got ";
-    if (!node.IsScalar()) fail(field, expected + kind_of(node));
-    const std::string& s = node.Scalar();  // the text as written: never read through a double
-    const bool plain = node.Tag() == "?";
-    if (plain && is_yaml_boolean(s)) fail(field, expected + "the boolean " + backticked(s));
-    if (is_nan_or_infinity(s))
-      fail(field, expected + backticked(s) + ", which is not finite (NaN and infinities are refused)");
-    try {
-      return parse_rational(s);
-    } catch (const std::invalid_argument& e) {
-      fail(field, "invalid number for " + what + ": " + e.what());
-    }
+    return read_exact_number(node, source_, field, what);
   }
 
   std::vector<Vec2<Rational>> read_joints(const Fields& pf) const {
@@ -257,9 +204,8 @@ void emit_list(YAML::Emitter& out, const std::vector<Rational>& values) {
 }  // namespace
 
 PolygonScene parse_polygon_scene(const std::string& yaml_text, const std::string& source) {
-  const YAML::Node doc = parse_yaml_document(yaml_text, source);
-  if (doc.IsNull())
-    throw InputError(source, "", "empty document: expected a map with the fields `name` and `polygon`");
+  const YAML::Node doc = parse_single_document(
+      yaml_text, source, "empty document: expected a map with the fields `name` and `polygon`");
   try {
     return SceneReader(source).read(doc);
   } catch (const YAML::Exception& e) {  // a safety net: the reader only uses non-throwing calls
@@ -267,7 +213,9 @@ PolygonScene parse_polygon_scene(const std::string& yaml_text, const std::string
   }
 }
 
-PolygonScene load_polygon_scene(const std::string& path) { return parse_polygon_scene(read_text_file(path), path); }
+PolygonScene load_polygon_scene(const std::string& path) {
+  return parse_polygon_scene(read_scene_file(path), path);
+}
 
 std::string polygon_scene_to_yaml(const PolygonScene& scene) {
   YAML::Emitter out;

@@ -83,6 +83,8 @@ json example_json(const SweepExample& e) {
 
 }  // namespace
 
+json to_json(const ClaimOutcome& c) { return claim_json(c); }
+
 json to_json(const PolygonCheck& check) {
   json claims = json::array();
   json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},

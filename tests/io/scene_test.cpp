@@ -238,8 +238,8 @@ TEST(ParsePolygonScene, RejectsUnknownPolygonField) {
 
 TEST(ParsePolygonScene, RejectsMechanismScenesWithItsOwnMessage) {
   EXPECT_TRUE(FailsWith("name: eight-bar\nmechanism:\n  links: 8\n", "mechanism",
-                        {"mechanism scenes are not supported yet: only `polygon` scenes"}));
-  EXPECT_TRUE(FailsWith("zzz: 1\nmechanism: {}\n", "mechanism", {"not supported yet"}));
+                        {"this is a mechanism scene: read it with load_mechanism_scene"}));
+  EXPECT_TRUE(FailsWith("zzz: 1\nmechanism: {}\n", "mechanism", {"mechanism scene"}));
 }
 
 TEST(ParsePolygonScene, RejectsFieldGivenTwice) {

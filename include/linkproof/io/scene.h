@@ -15,8 +15,8 @@
 //   side). A dead centre (r_{n-2} parallel to r_{n-1}, D = 0) is valid input: the mechanism is
 //   undefined there, and saying so is the checker's job, not the reader's.
 // - Any other top-level key, or any key in `polygon` other than the three above, is an error
-//   ("unknown field"); so is a repeated key. A top-level `mechanism:` key (compound mechanisms,
-//   a later feature) is refused with its own message.
+//   ("unknown field"); so is a repeated key. A top-level `mechanism:` key (a mechanism scene,
+//   io/mechanism_scene.h) is refused here with its own message.
 //
 // Exactness: every number is read from the YAML scalar's text, never through a double, with
 // linkproof::parse_rational (core/exact.h). Accepted spellings, quoted or not: integers ("-12"),

@@ -15,6 +15,8 @@ namespace linkproof {
 ///  "statement", "note"?, "instances": [..], "terms": [..]}], "not_applicable", "summary"}
 nlohmann::json to_json(const PolygonCheck& check);
 nlohmann::json to_json(const ComparisonOutcome& c);
+/// One claim's outcome as in the `claims` list of the check JSON (shared by polygon and mechanism checks).
+nlohmann::json to_json(const ClaimOutcome& c);
 nlohmann::json to_json(const SweepReport& sweep);
 
 }  // namespace linkproof

@@ -1,0 +1,78 @@
+// Mechanism scene files: any planar linkage with revolute and prismatic pairs, its inputs, and
+// optional tracer points and declared dimensions, read from YAML with every number exact.
+//
+// Schema (fields required unless marked optional):
+//
+//   name: eightbar-fig5
+//   description: free text                          # optional
+//   mechanism:
+//     ground: "0"                                   # the frame's link name
+//     links: ["0", "1", ...]                        # optional: when given, every link named
+//                                                   # elsewhere must be in it (typos are errors)
+//     joints:
+//       - {name: "01", type: revolute,  links: ["0", "1"], at: [0, 0]}
+//       - {name: "D",  type: prismatic, links: ["0", "4"], at: [117349/1000, -26785/1000], axis: [1, 0]}
+//     inputs:                                       # as many as the mobility
+//       - {link: "1", omega: 1, omega_dot: 1/2}     # rates relative to the ground
+//       - {joint: "D", v: 2, a: 0}                  # a slider: sigma-dot, sigma-ddot along axis
+//     points:                                       # optional tracer points (e.g. a coupler point)
+//       - {name: P, link: "3", at: [9, 14]}
+//     dimensions:                                   # optional declared lengths between two
+//       - {joints: ["A", "B"], length: 60}          # joints of one link
+//     tolerance: 1/10                               # optional: allowed | |AB| - length |
+//     catalogue: [fourbar_polygon]                  # optional: paper-specific claim sets to run
+//
+// - A joint has a unique name, `type` revolute or prismatic, exactly two different links and a
+//   point `at`; a prismatic joint also a non-zero `axis` (links[0] is the guide that carries the
+//   axis, links[1] the slider: geometry/linkage.h). Every link must be connected to the ground.
+// - Closure: the links are the rigid bodies through their joints, so joint positions close every
+//   loop by construction. Declared `dimensions` are what positions read from data can violate:
+//   without `tolerance` each must hold exactly, with it within the tolerance; otherwise the
+//   scene is refused ("does not close at the given positions") naming the dimension.
+// - Mobility and the number of inputs are checked when solving (symbolic/mechanism_solve.h).
+// Errors: InputError(source, field, problem), fields like "mechanism.joints[3].axis".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linkproof/geometry/linkage.h"
+
+namespace linkproof {
+
+struct MechanismPoint {
+  std::string name;
+  int link = 0;
+  Vec2<Rational> at;
+};
+
+struct LinkDimension {
+  int joint_a = 0, joint_b = 0;
+  Rational length;
+};
+
+struct MechanismScene {
+  std::string name;
+  std::string source;
+  Linkage linkage;
+  std::vector<MechanismInput> inputs;
+  std::vector<MechanismPoint> points;
+  std::vector<LinkDimension> dimensions;
+  std::optional<Rational> tolerance;
+  std::vector<std::string> catalogues;
+  /// max over dimensions of | |AB| - length | (an approximation in double; 0 if none).
+  double dimension_residual = 0;
+};
+
+/// True if the file is a YAML map with a top-level `mechanism` key (false for anything else,
+/// including unreadable files: the polygon reader then reports the problem).
+bool is_mechanism_scene_text(const std::string& yaml_text);
+
+MechanismScene load_mechanism_scene(const std::string& path);
+MechanismScene parse_mechanism_scene(const std::string& yaml_text, const std::string& source);
+
+/// The scene read from `path` as text (InputError if unreadable); used to choose the reader.
+std::string read_scene_text(const std::string& path);
+
+}  // namespace linkproof

@@ -1,0 +1,31 @@
+// Reports of a mechanism check (eval/mechanism_check.h): JSON and text.
+//
+// JSON contract (`linkproof check --json` on a mechanism scene):
+//   {"scene": "...", "arithmetic": "exact", "mobility": 1,
+//    "grubler_mobility": 1, "rank": 7, "loops": 3, "unknowns": 7,
+//    "condition": 41.3,                        // 2-norm condition of the velocity system (double)
+//    "closure_residual": "0", "dimension_residual": 0,
+//    "links":  {"1": {"omega": "1", "omega_dot": "1/2"}, ...},      // relative to the ground
+//    "relative": {"1,2": {"omega": "...", "omega_dot": "..."}, ...}, // omega_ik = omega_i - omega_k
+//    "joints": {"12": {"v": ["..", ".."], "a": ["..", ".."]},         // prismatic: the slider's
+//               "D": {"v": [..], "a": [..], "sliding_v": "..", "sliding_a": ".."}},  point
+//    "points": {"P": {"v": [..], "a": [..]}},
+//    "tables": {"fourbar_polygon": {"A_A^n": "(x, y)", ...}},
+//    "claims": [{"id": "...", "verdict": "holds", "expected": "holds", "as_expected": true, ...}],
+//    "not_applicable": [...], "summary": {...}, "exit_status": 0}
+// Numbers are exact reduced "p/q" in exact mode, shortest round-trip decimals otherwise.
+// Claim entries are those of the polygon check (report/json_report.h).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+
+#include "linkproof/eval/mechanism_check.h"
+
+namespace linkproof {
+
+nlohmann::json to_json(const MechanismCheck& check);
+void write_text(std::ostream& out, const MechanismCheck& check);
+
+}  // namespace linkproof

@@ -1,0 +1,128 @@
+// linkproof check-claim FILE.yaml [--n A..B] [--count N] [--seed S] [--scene SCENE] [--json]
+// linkproof check-claim --vocabulary
+//
+// A user's claims: proved for every n (symbolic, with the exceptional set), proved for the
+// given n, holding on every random exact instance (no proof found), or failing with an exact
+// counterexample shrunk to small integer coordinates and rates, and the terms that differ.
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "cli.h"
+#include "command.h"
+#include "linkproof/io/claim_file.h"
+#include "linkproof/claims/vocabulary.h"
+#include "linkproof/eval/random_polygon.h"
+#include "linkproof/io/scene.h"
+#include "linkproof/report/json_report.h"
+#include "linkproof/report/prove_report.h"
+#include "linkproof/report/text_report.h"
+
+namespace linkproof::cli {
+
+namespace {
+
+struct CheckClaimArgs {
+  std::string file;
+  std::string n_range;
+  int count = 20;
+  std::uint64_t seed = 1;
+  std::string scene;
+  double ladder_seconds = 1.0;
+  bool json = false;
+  bool vocabulary = false;
+};
+
+void print_vocabulary(std::ostream& out) {
+  for (const Word& w : vocabulary())
+    fmt::print(out, "{:24} {}\n", w.name + (w.arity == 0 ? "" : w.arity == 1 ? "[.]" : "(a, b)"), w.meaning);
+}
+
+/// No proof: the claim on `count` random exact polygons per n; a failure is a counterexample.
+void sample(GroundTruthEngine& engine, const DataClaim& c, int lo, int hi, const CheckClaimArgs& a, ProofResult& r) {
+  for (int n = std::max(lo, c.info.min_n); n <= hi && (c.info.max_n == 0 || n <= c.info.max_n); ++n)
+    for (int i = 0; i < a.count; ++i) {
+      const auto rc = generate_random_polygon(a.seed, n, i);
+      const ClaimOutcome o = check_data_claim(engine, c, rc.polygon, rc.rates);
+      ++r.samples;
+      if (o.verdict == Verdict::Fails) {
+        CounterexampleSearch s;
+        s.n_min = std::max(lo, c.info.min_n);
+        s.n_max = n;
+        s.seed = a.seed;
+        r.counterexample = find_counterexample(engine, c, s);
+        if (!r.counterexample) {  // the random polygon itself, unshrunk
+          Counterexample cx{rc.polygon, rc.rates, o, r.samples, 0, 0, ""};
+          cx.scene_yaml = polygon_scene_to_yaml(PolygonScene{"counterexample-" + c.info.id, "", rc.polygon, rc.rates});
+          r.counterexample = cx;
+        }
+        r.verdict = ProofVerdict::Disproved;
+        return;
+      }
+    }
+  r.verdict = ProofVerdict::HoldsOnSamples;
+}
+
+int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
+  if (a.vocabulary) {
+    print_vocabulary(out);
+    return kAsExpected;
+  }
+  if (a.file.empty()) throw InputError("<command line>", "FILE", "a claim file is required (or --vocabulary)");
+  const ClaimFile file = load_claim_file(a.file);
+  GroundTruthEngine engine;
+  if (!a.scene.empty()) {  // every claim on one configuration, as `check` does
+    const PolygonScene scene = load_polygon_scene(a.scene);
+    std::vector<Claim> claims;
+    for (const auto& c : file.claims) claims.push_back(to_claim(c));
+    const PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, Arithmetic::Exact);
+    if (a.json)
+      out << to_json(check).dump(2) << "\n";
+    else
+      write_text(out, check, true);
+    return exit_status(check);
+  }
+  if (a.count < 1 || a.count > 100000) throw InputError("<command line>", "--count", "must be between 1 and 100000");
+  int lo = 4, hi = 12;
+  if (!a.n_range.empty()) std::tie(lo, hi) = parse_n_range(a.n_range, "--n", 4, kMaxClaimSides);
+  std::vector<ProofResult> results;
+  for (const DataClaim& c : file.claims) {
+    ProveOptions o;
+    o.ladder_seconds = a.ladder_seconds;
+    o.search.seed = a.seed;
+    o.search.n_min = lo;
+    o.search.n_max = std::max(lo, std::min(hi, 8));
+    if (!a.n_range.empty() && lo == hi) o.only_n = lo;
+    if (!a.n_range.empty() && lo != hi) o.n_max = hi;
+    ProofResult r = prove_claim(engine, c, o);
+    // No proof and no counterexample from the symbolic route: random exact instances decide.
+    if (r.verdict == ProofVerdict::Error) {
+      const std::string why = r.error;
+      r.error.clear();
+      sample(engine, c, lo, hi, a, r);
+      if (r.verdict == ProofVerdict::HoldsOnSamples) r.error = "no proof: " + why;
+    }
+    results.push_back(std::move(r));
+  }
+  if (a.json)
+    out << to_json(results).dump(2) << "\n";
+  else
+    write_text(out, results);
+  return exit_status(results);
+}
+
+}  // namespace
+
+void add_check_claim_command(CLI::App& app, Action& action) {
+  auto* c = app.add_subcommand("check-claim", "prove or disprove your own claims (a claim file, see README)");
+  auto& a = bind_action<CheckClaimArgs>(c, action, run_check_claim);
+  c->add_option("file", a.file, "claim file (YAML)");
+  c->add_option("--n", a.n_range, "sides: N (prove for this n) or A..B (default: every n, searching 4..8)");
+  c->add_option("--count", a.count, "random exact instances per n when no proof is found (default 20)");
+  c->add_option("--seed", a.seed, "seed of the counterexample search and the samples (default 1)");
+  c->add_option("--scene", a.scene, "check the claims on this scene only (exact)");
+  c->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs per claim (default 1)");
+  c->add_flag("--vocabulary", a.vocabulary, "print the names a claim may use");
+  c->add_flag("--json", a.json, "print JSON");
+}
+
+}  // namespace linkproof::cli

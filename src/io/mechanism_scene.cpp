@@ -1,0 +1,296 @@
+#include "linkproof/io/mechanism_scene.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "linkproof/core/error.h"
+#include "yaml_document.h"
+
+namespace linkproof {
+
+using namespace yaml_io;
+
+namespace {
+
+class MechanismReader {
+ public:
+  explicit MechanismReader(std::string source) : source_(std::move(source)) {}
+
+  MechanismScene read(const YAML::Node& doc) {
+    if (!doc.IsMap()) fail("", "expected a map with the fields `name` and `mechanism`, got " + kind_of(doc));
+    check_keys(doc, "", {"name", "description", "mechanism"});
+    MechanismScene scene;
+    scene.source = source_;
+    const YAML::Node name = doc["name"];
+    if (!name || !name.IsScalar() || name.Scalar().find_first_not_of(" \t\r\n") == std::string::npos)
+      fail("name", "expected the scene's name, a non-empty string");
+    scene.name = name.Scalar();
+    if (const YAML::Node d = doc["description"]; d && !d.IsScalar())
+      fail("description", "expected a string (free text), got " + kind_of(d));
+    const YAML::Node m = doc["mechanism"];
+    if (!m) fail("mechanism", "missing required field `mechanism`");
+    if (!m.IsMap()) fail("mechanism", "expected a map with ground, joints and inputs, got " + kind_of(m));
+    check_keys(m, "mechanism.",
+               {"ground", "links", "joints", "inputs", "points", "dimensions", "tolerance", "catalogue"});
+
+    read_links(m);
+    const int ground = link_index(m["ground"], "mechanism.ground", true);
+    std::vector<LinkageJoint> joints = read_joints(m);
+    // Links first named by joints are known now; the ground must be one of them.
+    if (std::string problem = linkage_problem(links_, ground, joints); !problem.empty())
+      fail("mechanism.joints", problem);
+    scene.linkage = Linkage(links_, ground, std::move(joints));
+    scene.inputs = read_inputs(m, scene.linkage);
+    scene.points = read_points(m);
+    if (const YAML::Node t = m["tolerance"]) {
+      scene.tolerance = read_exact_number(t, source_, "mechanism.tolerance", "the closure tolerance");
+      if (cln::minusp(*scene.tolerance)) fail("mechanism.tolerance", "expected a tolerance >= 0");
+    }
+    read_dimensions(m, scene);
+    if (const YAML::Node c = m["catalogue"]) {
+      if (!c.IsSequence()) fail("mechanism.catalogue", "expected a list of catalogue names, got " + kind_of(c));
+      for (const auto& e : c) {
+        if (!e.IsScalar()) fail("mechanism.catalogue", "expected catalogue names (strings), got " + kind_of(e));
+        scene.catalogues.push_back(e.Scalar());
+      }
+    }
+    return scene;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    throw InputError(source_, field, shorten(problem, kMaxProblem));
+  }
+
+  void check_keys(const YAML::Node& map, const std::string& prefix, std::initializer_list<const char*> allowed) const {
+    std::set<std::string> seen;
+    std::string expected;
+    for (auto a : allowed) expected += (expected.empty() ? "" : ", ") + std::string(a);
+    for (const auto& kv : map) {
+      if (!kv.first.IsScalar()) fail(prefix, "a field name must be a plain string, got " + kind_of(kv.first));
+      const std::string& k = kv.first.Scalar();
+      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return k == a; }))
+        fail(prefix + shorten(k, kMaxQuoted), "unknown field " + backticked(k) + "; expected only: " + expected);
+      if (!seen.insert(k).second) fail(prefix + k, "field " + backticked(k) + " is given twice");
+    }
+  }
+
+  std::string name_of(const YAML::Node& n, const std::string& field, const std::string& what) const {
+    if (!n) fail(field, "missing required field: " + what);
+    if (!n.IsScalar() || n.Scalar().empty()) fail(field, "expected " + what + " (a non-empty string), got " + kind_of(n));
+    return n.Scalar();
+  }
+
+  void read_links(const YAML::Node& m) {
+    const YAML::Node l = m["links"];
+    if (!l) return;
+    if (!l.IsSequence()) fail("mechanism.links", "expected a list of link names, got " + kind_of(l));
+    for (size_t i = 0; i < l.size(); ++i) {
+      const std::string name = name_of(l[i], fmt::format("mechanism.links[{}]", i), "a link name");
+      if (std::find(links_.begin(), links_.end(), name) != links_.end())
+        fail(fmt::format("mechanism.links[{}]", i), "link " + backticked(name) + " is listed twice");
+      links_.push_back(name);
+    }
+    declared_ = true;
+  }
+
+  // The index of a named link; an undeclared name is added (no `links` list) or refused.
+  int link_index(const YAML::Node& n, const std::string& field, bool add) {
+    const std::string name = name_of(n, field, "a link name");
+    const auto it = std::find(links_.begin(), links_.end(), name);
+    if (it != links_.end()) return static_cast<int>(it - links_.begin());
+    if (declared_ || !add)
+      fail(field, "unknown link " + backticked(name) + (declared_ ? ": not in mechanism.links" : ": no joint connects it"));
+    links_.push_back(name);
+    return static_cast<int>(links_.size()) - 1;
+  }
+
+  Vec2<Rational> read_point(const YAML::Node& n, const std::string& field, const std::string& what) const {
+    if (!n) fail(field, "missing required field: " + what + " [x, y]");
+    if (!n.IsSequence() || n.size() != 2)
+      fail(field, "expected " + what + " as a list of 2 numbers [x, y], got " +
+                      (n.IsSequence() ? fmt::format("{} values", n.size()) : kind_of(n)));
+    return {read_exact_number(n[0], source_, field + "[0]", "the x of " + what),
+            read_exact_number(n[1], source_, field + "[1]", "the y of " + what)};
+  }
+
+  std::vector<LinkageJoint> read_joints(const YAML::Node& m) {
+    const YAML::Node js = m["joints"];
+    if (!js) fail("mechanism.joints", "missing required field `joints`: the list of joints");
+    if (!js.IsSequence() || js.size() == 0)
+      fail("mechanism.joints", "expected a non-empty list of joints, got " + kind_of(js));
+    if (js.size() > 2000) fail("mechanism.joints", fmt::format("expected at most 2000 joints, got {}", js.size()));
+    std::vector<LinkageJoint> out;
+    for (size_t i = 0; i < js.size(); ++i) {
+      const std::string f = fmt::format("mechanism.joints[{}]", i);
+      const YAML::Node j = js[i];
+      if (!j.IsMap()) fail(f, "expected a map {name, type, links, at[, axis]}, got " + kind_of(j));
+      check_keys(j, f + ".", {"name", "type", "links", "at", "axis"});
+      LinkageJoint joint;
+      joint.name = name_of(j["name"], f + ".name", "the joint's name");
+      for (const auto& o : out)
+        if (o.name == joint.name) fail(f + ".name", "joint name " + backticked(joint.name) + " is used twice");
+      const std::string type = name_of(j["type"], f + ".type", "the joint type (revolute or prismatic)");
+      if (type == "revolute") joint.type = JointType::Revolute;
+      else if (type == "prismatic") joint.type = JointType::Prismatic;
+      else fail(f + ".type", "expected `revolute` or `prismatic`, got " + backticked(type));
+      const YAML::Node ls = j["links"];
+      if (!ls || !ls.IsSequence() || ls.size() != 2)
+        fail(f + ".links", "a joint connects exactly two links: expected a list of 2 link names, got " +
+                               (ls && ls.IsSequence() ? fmt::format("{} names", ls.size()) : kind_of(ls)));
+      for (int s = 0; s < 2; ++s) joint.links[s] = link_index(ls[s], fmt::format("{}.links[{}]", f, s), true);
+      if (joint.links[0] == joint.links[1])
+        fail(f + ".links", "joint " + backticked(joint.name) + " names the same link twice: a joint needs two different links");
+      joint.at = read_point(j["at"], f + ".at", "the joint position");
+      if (joint.type == JointType::Prismatic) {
+        joint.axis = read_point(j["axis"], f + ".axis", "the guide direction");
+        if (is_zero_vector(joint.axis)) fail(f + ".axis", "zero axis: the guide direction of a prismatic pair must be non-zero");
+      } else if (j["axis"]) {
+        fail(f + ".axis", "only a prismatic joint has an axis");
+      }
+      out.push_back(std::move(joint));
+    }
+    return out;
+  }
+
+  std::vector<MechanismInput> read_inputs(const YAML::Node& m, const Linkage& g) {
+    const YAML::Node in = m["inputs"];
+    if (!in) fail("mechanism.inputs", "missing required field `inputs`: one per degree of freedom");
+    if (!in.IsSequence()) fail("mechanism.inputs", "expected a list of inputs, got " + kind_of(in));
+    std::vector<MechanismInput> out;
+    for (size_t i = 0; i < in.size(); ++i) {
+      const std::string f = fmt::format("mechanism.inputs[{}]", i);
+      const YAML::Node n = in[i];
+      if (!n.IsMap()) fail(f, "expected {link, omega, omega_dot} or {joint, v, a}, got " + kind_of(n));
+      MechanismInput x;
+      if (n["link"]) {
+        check_keys(n, f + ".", {"link", "omega", "omega_dot"});
+        x.kind = MechanismInput::Kind::Link;
+        x.index = link_index(n["link"], f + ".link", false);
+        if (x.index == g.ground()) fail(f + ".link", "an input on the ground link: its rates are 0 by definition");
+        x.rate = read_exact_number(n["omega"], source_, f + ".omega", "omega of the input link");
+        x.rate_dot = read_exact_number(n["omega_dot"], source_, f + ".omega_dot", "omega-dot of the input link");
+      } else if (n["joint"]) {
+        check_keys(n, f + ".", {"joint", "v", "a"});
+        x.kind = MechanismInput::Kind::Slider;
+        const std::string name = name_of(n["joint"], f + ".joint", "a joint name");
+        const auto j = g.find_joint(name);
+        if (!j) fail(f + ".joint", "unknown joint " + backticked(name));
+        if (g.joint(*j).type != JointType::Prismatic)
+          fail(f + ".joint", "joint " + backticked(name) + " is revolute: a slider input needs a prismatic joint");
+        x.index = *j;
+        x.rate = read_exact_number(n["v"], source_, f + ".v", "the sliding velocity");
+        x.rate_dot = read_exact_number(n["a"], source_, f + ".a", "the sliding acceleration");
+      } else {
+        fail(f, "an input names a `link` (with omega, omega_dot) or a prismatic `joint` (with v, a)");
+      }
+      for (const auto& o : out)
+        if (o.kind == x.kind && o.index == x.index) fail(f, "the same link or joint is driven twice");
+      out.push_back(x);
+    }
+    return out;
+  }
+
+  std::vector<MechanismPoint> read_points(const YAML::Node& m) {
+    std::vector<MechanismPoint> out;
+    const YAML::Node ps = m["points"];
+    if (!ps) return out;
+    if (!ps.IsSequence()) fail("mechanism.points", "expected a list of points {name, link, at}, got " + kind_of(ps));
+    for (size_t i = 0; i < ps.size(); ++i) {
+      const std::string f = fmt::format("mechanism.points[{}]", i);
+      if (!ps[i].IsMap()) fail(f, "expected a map {name, link, at}, got " + kind_of(ps[i]));
+      check_keys(ps[i], f + ".", {"name", "link", "at"});
+      MechanismPoint p;
+      p.name = name_of(ps[i]["name"], f + ".name", "the point's name");
+      p.link = link_index(ps[i]["link"], f + ".link", false);
+      p.at = read_point(ps[i]["at"], f + ".at", "the point's position");
+      out.push_back(std::move(p));
+    }
+    return out;
+  }
+
+  void read_dimensions(const YAML::Node& m, MechanismScene& scene) {
+    const YAML::Node ds = m["dimensions"];
+    if (!ds) return;
+    if (!ds.IsSequence()) fail("mechanism.dimensions", "expected a list {joints: [A, B], length: L}, got " + kind_of(ds));
+    const Linkage& g = scene.linkage;
+    for (size_t i = 0; i < ds.size(); ++i) {
+      const std::string f = fmt::format("mechanism.dimensions[{}]", i);
+      const YAML::Node d = ds[i];
+      if (!d.IsMap()) fail(f, "expected a map {joints: [A, B], length: L}, got " + kind_of(d));
+      check_keys(d, f + ".", {"joints", "length"});
+      const YAML::Node js = d["joints"];
+      if (!js || !js.IsSequence() || js.size() != 2) fail(f + ".joints", "expected a list of 2 joint names");
+      LinkDimension dim;
+      int idx[2];
+      for (int s = 0; s < 2; ++s) {
+        const std::string name = name_of(js[s], fmt::format("{}.joints[{}]", f, s), "a joint name");
+        const auto j = g.find_joint(name);
+        if (!j) fail(fmt::format("{}.joints[{}]", f, s), "unknown joint " + backticked(name));
+        idx[s] = *j;
+      }
+      dim.joint_a = idx[0], dim.joint_b = idx[1];
+      const auto& ja = g.joint(idx[0]);
+      const auto& jb = g.joint(idx[1]);
+      const bool share = std::any_of(std::begin(ja.links), std::end(ja.links),
+                                     [&](int l) { return l == jb.links[0] || l == jb.links[1]; });
+      if (!share || idx[0] == idx[1]) fail(f + ".joints", "a dimension joins two different joints of one link");
+      dim.length = read_exact_number(d["length"], source_, f + ".length", "the length");
+      if (!cln::plusp(dim.length)) fail(f + ".length", "expected a length > 0");
+      const Rational d2 = norm2(jb.at - ja.at);
+      const double actual = std::sqrt(cln::double_approx(d2));
+      const double residual = std::abs(actual - cln::double_approx(dim.length));
+      scene.dimension_residual = std::max(scene.dimension_residual, residual);
+      bool ok;
+      if (!scene.tolerance) {
+        ok = d2 == dim.length * dim.length;
+      } else {
+        const Rational lo = cln::max(Rational(0), dim.length - *scene.tolerance), hi = dim.length + *scene.tolerance;
+        ok = lo * lo <= d2 && d2 <= hi * hi;
+      }
+      if (!ok)
+        fail(f, fmt::format("the linkage does not close at the given positions: |{}{}| = {:.6g} but the declared "
+                            "length is {} ({}); move the joints or state a `tolerance`",
+                            ja.name, jb.name, actual, format_rational(dim.length),
+                            scene.tolerance ? "tolerance " + format_rational(*scene.tolerance) : "exact input: no tolerance"));
+      scene.dimensions.push_back(dim);
+    }
+  }
+
+  std::string source_;
+  std::vector<std::string> links_;
+  bool declared_ = false;
+};
+
+}  // namespace
+
+bool is_mechanism_scene_text(const std::string& yaml_text) {
+  try {
+    const YAML::Node doc = parse_single_document(yaml_text, "", "");
+    return doc.IsMap() && doc["mechanism"];
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+std::string read_scene_text(const std::string& path) { return read_scene_file(path); }
+
+MechanismScene parse_mechanism_scene(const std::string& yaml_text, const std::string& source) {
+  const YAML::Node doc = parse_single_document(
+      yaml_text, source, "empty document: expected a map with the fields `name` and `mechanism`");
+  try {
+    return MechanismReader(source).read(doc);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source, "", std::string("cannot read the YAML: ") + e.what());
+  }
+}
+
+MechanismScene load_mechanism_scene(const std::string& path) {
+  return parse_mechanism_scene(read_scene_file(path), path);
+}
+
+}  // namespace linkproof

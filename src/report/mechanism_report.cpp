@@ -1,0 +1,100 @@
+#include "linkproof/report/mechanism_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "linkproof/report/json_report.h"
+
+namespace linkproof {
+
+using nlohmann::json;
+
+namespace {
+
+json point_json(const MechanismCheck::PointMotion& p) {
+  json j{{"v", {p.v[0], p.v[1]}}, {"a", {p.a[0], p.a[1]}}};
+  if (!p.slide.empty()) j["sliding_v"] = p.slide, j["sliding_a"] = p.slide_dot;
+  return j;
+}
+
+}  // namespace
+
+json to_json(const MechanismCheck& c) {
+  json links = json::object(), relative = json::object(), joints = json::object(), points = json::object(),
+       tables = json::object(), claims = json::array();
+  for (size_t l = 0; l < c.link_names.size(); ++l)
+    links[c.link_names[l]] = {{"omega", c.omega[l]}, {"omega_dot", c.omega_dot[l]}};
+  for (const auto& r : c.relative) relative[r.i + "," + r.k] = {{"omega", r.omega}, {"omega_dot", r.omega_dot}};
+  for (const auto& p : c.joints) joints[p.name] = point_json(p);
+  for (const auto& p : c.points) points[p.name] = point_json(p);
+  for (const auto& t : c.tables) {
+    json rows = json::object();
+    for (const auto& [k, v] : t.rows) rows[k] = v;
+    tables[t.title] = rows;
+  }
+  json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
+               {"unexpected_failures", 0}};
+  for (const auto& cl : c.claims) {
+    claims.push_back(to_json(cl));
+    const std::string v(to_string(cl.verdict));
+    summary[v] = summary[v].get<int>() + 1;
+    if (cl.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
+  }
+  return {{"scene", c.scene},
+          {"arithmetic", std::string(to_string(c.arithmetic))},
+          {"mobility", c.mobility},
+          {"grubler_mobility", c.grubler},
+          {"rank", c.rank},
+          {"loops", c.loops},
+          {"unknowns", c.unknowns},
+          {"condition", c.condition},
+          {"closure_residual", c.closure_residual},
+          {"dimension_residual", c.dimension_residual},
+          {"links", links},
+          {"relative", relative},
+          {"joints", joints},
+          {"points", points},
+          {"tables", tables},
+          {"claims", claims},
+          {"not_applicable", c.not_applicable},
+          {"summary", summary},
+          {"exit_status", exit_status(c)}};
+}
+
+void write_text(std::ostream& out, const MechanismCheck& c) {
+  fmt::print(out, "scene {} ({} arithmetic)\n", c.scene, to_string(c.arithmetic));
+  fmt::print(out, "mobility {} (Gruebler {}), {} loops, {} unknowns, rank {}, condition {:.3g}, closure residual {}\n\n",
+             c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, c.closure_residual);
+  fmt::print(out, "{:<10} {:>28} {:>28}\n", "link", "omega", "omega_dot");
+  for (size_t l = 0; l < c.link_names.size(); ++l)
+    fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], c.omega[l], c.omega_dot[l]);
+  fmt::print(out, "\n{:<10} {:>40} {:>40}\n", "joint", "v", "a");
+  for (const auto* list : {&c.joints, &c.points})
+    for (const auto& p : *list)
+      fmt::print(out, "{:<10} {:>40} {:>40}{}\n", p.name, fmt::format("({}, {})", p.v[0], p.v[1]),
+                 fmt::format("({}, {})", p.a[0], p.a[1]),
+                 p.slide.empty() ? "" : fmt::format("   sliding v {}, a {}", p.slide, p.slide_dot));
+  for (const auto& t : c.tables) {
+    fmt::print(out, "\n{}\n", t.title);
+    for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);
+  }
+  fmt::print(out, "\n{:<48} {:<13} {:<9} {}\n", "claim", "verdict", "expected", "evidence");
+  for (const auto& cl : c.claims) {
+    std::string evidence = cl.error;
+    if (evidence.empty()) {
+      const auto& h = cl.headline;
+      evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
+                                                 : fmt::format("{}: {} vs {}", h.label, h.lhs, h.rhs);
+    }
+    fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
+               evidence);
+  }
+  if (!c.not_applicable.empty()) {
+    fmt::print(out, "\nnot applicable:");
+    for (const auto& id : c.not_applicable) fmt::print(out, " {}", id);
+    fmt::print(out, "\n");
+  }
+  fmt::print(out, "\nexit status {}\n", exit_status(c));
+}
+
+}  // namespace linkproof

@@ -1,0 +1,23 @@
+// Paper-specific claim sets for mechanism scenes, selected by a scene's `catalogue` field:
+//   dijksman1966_compound  seed 000 section 3: all relative omega-dot from eq. (22) + companion
+//                          per polygon, the triangle relations and the input (SPEC A7)
+//   fourbar_polygon        seed 001: the four-bar acceleration polygon and its errata (SPEC B)
+//   koshel_class3          seed 003: the class-III mechanism with sliders (SPEC C)
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "linkproof/eval/mechanism_check.h"
+
+namespace linkproof::catalogues {
+
+MechanismCatalogue dijksman1966_compound();
+MechanismCatalogue fourbar_polygon();
+MechanismCatalogue koshel_class3();
+
+/// The catalogues named by scene.catalogues; an unknown name is InputError(scene.source,
+/// "mechanism.catalogue", ...).
+std::vector<MechanismCatalogue> mechanism_catalogues(const MechanismScene& scene);
+
+}  // namespace linkproof::catalogues
