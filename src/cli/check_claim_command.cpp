@@ -103,11 +103,7 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     }
     results.push_back(std::move(r));
   }
-  if (a.json)
-    out << to_json(results).dump(2) << "\n";
-  else
-    write_text(out, results);
-  return exit_status(results);
+  return report_proofs(out, results, a.json);
 }
 
 }  // namespace

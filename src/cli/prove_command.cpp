@@ -45,11 +45,7 @@ int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
     results.push_back(prove_claim(engine, *c, o));
   }
   if (results.empty()) throw InputError("<command line>", "--n", "no chosen claim applies to n = " + std::to_string(*a.n));
-  if (a.json)
-    out << to_json(results).dump(2) << "\n";
-  else
-    write_text(out, results);
-  return exit_status(results);
+  return report_proofs(out, results, a.json);
 }
 
 }  // namespace

@@ -109,4 +109,12 @@ int exit_status(const std::vector<ProofResult>& results) {
   return status;
 }
 
+int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json) {
+  if (json)
+    out << to_json(results).dump(2) << "\n";
+  else
+    write_text(out, results);
+  return exit_status(results);
+}
+
 }  // namespace linkproof

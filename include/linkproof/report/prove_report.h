@@ -24,6 +24,10 @@ void write_text(std::ostream& out, const std::vector<ProofResult>& results);
 /// 3 if any claim errored.
 int exit_status(const std::vector<ProofResult>& results);
 
+/// Prints the results as JSON or text and returns exit_status(results): the one ending of
+/// `prove` and `check-claim`.
+int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json);
+
 /// What the symbols of proofs mean.
 inline constexpr const char* kProofCoordinates =
     "x_k, y_k: components of side r_k = K_{k+1} - K_k (k = 1..n-1); (px, py): joint K_n";
