@@ -43,3 +43,16 @@ TEST(MpFloat, DefaultIsZeroAndPrintsWithDecimalExponent) {
 
 }  // namespace
 }  // namespace linkproof
+
+namespace linkproof {
+namespace {
+
+TEST(ExactValueOf, ReturnsForDoublesWhoseExponentShiftIsZero) {
+  // Every double in [2^52, 2^53) is an integer with shift 0 (this once hung in cln::expt_pos).
+  EXPECT_EQ(exact_value_of(4832323065636672.0), Rational(4832323065636672LL));
+  EXPECT_EQ(exact_value_of(0.375), Rational(3) / 8);
+  EXPECT_EQ(exact_value_of(0.0), Rational(0));
+}
+
+}  // namespace
+}  // namespace linkproof
