@@ -17,6 +17,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   Action action;
   add_check_command(app, action);
   add_sweep_command(app, action);
+  add_bench_command(app, action);
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
   try {

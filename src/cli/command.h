@@ -39,5 +39,6 @@ std::pair<int, int> parse_n_range(const std::string& s, const std::string& optio
 
 void add_check_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli
