@@ -71,9 +71,12 @@ std::vector<ParetoEntry> aggregate(const std::vector<CaseStudy>& studies) {
 void describe_family(FamilyCurve& curve) {
   // Half the digits of double: beyond this a double figure is not worth reporting.
   constexpr double kHalfDigits = -26;
-  double best_score = kInf;
+  // Score: (points where the route is undefined, worst error where defined), lexicographic, so
+  // that on a family where every route breaks in double (the dead centre) the best still shows.
+  std::pair<int, double> best_score{1 << 30, kInf};
   for (Route r : kAllRoutes) {
-    double worst = -kInf;
+    double worst = -kInf, worst_defined = -kInf;
+    int undefined_points = 0;
     std::string first_loss, first_undefined;
     bool seen = false;
     for (const FamilyPoint& p : curve.points) {
@@ -83,6 +86,7 @@ void describe_family(FamilyCurve& curve) {
         seen = true;
         if (!m.defined) {
           worst = kInf;
+          ++undefined_points;
           if (first_undefined.empty())
             first_undefined = fmt::format("undefined at {} = {} ({}: {})", curve.family->parameter,
                                           format_parameter(p.parameter), m.undefined_quantity, m.reason);
@@ -90,6 +94,7 @@ void describe_family(FamilyCurve& curve) {
         }
         const double err = std::max(m.n1.log2_relative_error, m.n2.log2_relative_error);
         worst = std::max(worst, err);
+        worst_defined = std::max(worst_defined, err);
         if (err > kHalfDigits && first_loss.empty())
           first_loss = fmt::format("{:.0f} of 53 bits lost at {} = {}", std::min(53.0, 53 + err),
                                    curve.family->parameter, format_parameter(p.parameter));
@@ -102,8 +107,9 @@ void describe_family(FamilyCurve& curve) {
     else
       finding += first_loss + (first_loss.empty() || first_undefined.empty() ? "" : "; ") + first_undefined;
     curve.findings.push_back(std::move(finding));
-    if (worst < best_score) {
-      best_score = worst;
+    const std::pair<int, double> score{undefined_points, worst_defined};
+    if (score < best_score) {
+      best_score = score;
       curve.trust_route = std::string(to_string(r));
     }
   }
