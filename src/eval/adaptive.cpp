@@ -69,16 +69,21 @@ bool certified_bound(const Tracked<F>& x, double tolerance, double& value, doubl
 template <class F>
 bool try_stage(const Polygon<double>& p, const InputRates<double>& in, const AdaptiveOptions& o, AdaptiveResult& r) {
   using T = Tracked<F>;
-  // Inputs are exact: radius 0.
-  std::vector<Vec2<T>> joints;
-  joints.reserve(p.joints().size());
-  for (const auto& k : p.joints()) joints.push_back({T(static_cast<F>(k.x), 0), T(static_cast<F>(k.y), 0)});
-  InputRates<T> rates;
-  for (double w : in.omega) rates.omega.push_back(T(static_cast<F>(w), 0));
-  for (double w : in.omega_dot) rates.omega_dot.push_back(T(static_cast<F>(w), 0));
+  // Inputs are exact (radius 0); sides are formed in tracked arithmetic, so their rounding is
+  // bounded too. No copies of the polygon: the route reads the doubles in place.
+  const auto exact = [](double x) { return T(static_cast<F>(x), 0); };
+  const auto side = [&](int j) {
+    const Vec2<double>& k0 = p.joint(j);
+    const Vec2<double>& k1 = p.joint(j + 1);
+    return Vec2<T>{exact(k1.x) - exact(k0.x), exact(k1.y) - exact(k0.y)};
+  };
+  const auto rates = [&](int k, T& w, T& wd) {
+    w = exact(in.omega[static_cast<size_t>(k)]);
+    wd = exact(in.omega_dot[static_cast<size_t>(k)]);
+  };
   RouteValue<T> v;
   try {
-    v = compute_by_direct_solve(Polygon<T>(std::move(joints)), rates);
+    v = direct_solve_core<T>(p.n(), side, rates);
   } catch (const UndefinedQuantity&) {
     return false;  // a pivot is exactly zero in F: let the exact stage decide
   }

@@ -136,25 +136,38 @@ std::array<T, 2> solve_2x2_partial_pivoting(const Vec2<T>& c0, const Vec2<T>& c1
   return {(b0 - a01 * x1) / a00, x1};
 }
 
-/// Route (c): the differentiated loop closure solved directly (velocities, then accelerations).
-template <class T>
-RouteValue<T> compute_by_direct_solve(const Polygon<T>& p, const InputRates<T>& in) {
-  const int n = p.n();
-  const Vec2<T> a = p.side(n - 2), b = p.side(n - 1);
+/// Route (c) on any source of data: side(j) gives r_j (j = 1..n-1) and rates(k, w, wd) sets
+/// omega_{k+1,n}, omega-dot_{k+1,n} (k = 0..n-4). compute_by_direct_solve and the adaptive mode
+/// (which feeds doubles into tracked arithmetic without copying) share this one algorithm.
+template <class T, class SideFn, class RatesFn>
+RouteValue<T> direct_solve_core(int n, const SideFn& side, const RatesFn& rates) {
+  const Vec2<T> a = side(n - 2), b = side(n - 1);
   Vec2<T> rhs_w{from_int<T>(0), from_int<T>(0)};
   Vec2<T> rhs_wd = rhs_w;
   for (int j = 1; j <= n - 3; ++j) {
-    const Vec2<T> r = p.side(j);
-    const auto k = static_cast<size_t>(j - 1);
+    const Vec2<T> r = side(j);
+    T w, wd;
+    rates(j - 1, w, wd);
     const Vec2<T> jr = perp(r);
-    rhs_w = rhs_w - in.omega[k] * jr;
-    rhs_wd = rhs_wd + (in.omega[k] * in.omega[k]) * r - in.omega_dot[k] * jr;
+    rhs_w = rhs_w - w * jr;
+    rhs_wd = rhs_wd + (w * w) * r - wd * jr;
   }
   const Vec2<T> ja = perp(a), jb = perp(b);
-  const std::array<T, 2> w = solve_2x2_partial_pivoting(ja, jb, rhs_w);
-  rhs_wd = rhs_wd + (w[0] * w[0]) * a + (w[1] * w[1]) * b;
-  const std::array<T, 2> wd = solve_2x2_partial_pivoting(ja, jb, rhs_wd);
-  return {wd[1], wd[0]};
+  const std::array<T, 2> x = solve_2x2_partial_pivoting(ja, jb, rhs_w);
+  rhs_wd = rhs_wd + (x[0] * x[0]) * a + (x[1] * x[1]) * b;
+  const std::array<T, 2> xd = solve_2x2_partial_pivoting(ja, jb, rhs_wd);
+  return {xd[1], xd[0]};
+}
+
+/// Route (c): the differentiated loop closure solved directly (velocities, then accelerations).
+template <class T>
+RouteValue<T> compute_by_direct_solve(const Polygon<T>& p, const InputRates<T>& in) {
+  return direct_solve_core<T>(
+      p.n(), [&](int j) { return p.side(j); },
+      [&](int k, T& w, T& wd) {
+        w = in.omega[static_cast<size_t>(k)];
+        wd = in.omega_dot[static_cast<size_t>(k)];
+      });
 }
 
 /// Route (d): the compiled symbolic solution (derived once per n by `engine`).
