@@ -42,5 +42,6 @@ void add_sweep_command(CLI::App& app, Action& action);
 void add_prove_command(CLI::App& app, Action& action);
 void add_check_claim_command(CLI::App& app, Action& action);
 void add_count_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli

@@ -51,8 +51,10 @@ Rational exact_value_of(F x) {
   cln::cl_I m = cln::cl_I(static_cast<long long>(high)) * cln::cl_I(4294967296LL) +
                 cln::cl_I(static_cast<long long>(low));
   const int shift = exponent - digits;
-  if (shift >= 0) return m * cln::expt_pos(cln::cl_I(2), shift);
-  return m / cln::expt_pos(cln::cl_I(2), -shift);
+  // cln::ash, not expt_pos: expt_pos(2, 0) does not return (it needs a positive exponent),
+  // and every double in [2^52, 2^53) has shift 0.
+  if (shift >= 0) return cln::ash(m, shift);
+  return Rational(m) / cln::ash(cln::cl_I(1), -shift);
 }
 template Rational exact_value_of<double>(double);
 template Rational exact_value_of<long double>(long double);

@@ -52,18 +52,38 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
   const F scale = std::max({std::abs(l.v), std::abs(r.v), static_cast<F>(c.scale)});
   out.relative_error_bound = scale > 0 ? static_cast<double>(res.e / scale) : (res.e == 0 ? 0.0 : HUGE_VAL);
   const F u = Tracked<F>::unit_roundoff();
+  const auto condition = [u](const Tracked<F>& x) {
+    return x.e == 0 ? 0.0 : (x.v == 0 ? HUGE_VAL : static_cast<double>(x.e / (u * std::abs(x.v))));
+  };
+  const double cond_l = condition(l), cond_r = condition(r);
+  out.tolerance_derivation = fmt::format(
+      "tolerance {} = bound(lhs) {:.3g} + bound(rhs) {:.3g} + rounding of lhs - rhs; each bound is a running "
+      "error bound (inputs rounded from the exact scene, every operation's rounding), i.e. u times the "
+      "evaluation's condition: condition(lhs) = {:.3g}, condition(rhs) = {:.3g}, u = 2^-{}",
+      out.tolerance, static_cast<double>(l.e), static_cast<double>(r.e), cond_l, cond_r,
+      std::numeric_limits<F>::digits);
+  const auto set_trust = [&] {
+    out.trust_route = fmt::format(
+        "exact arithmetic (--arith exact) decides this comparison; in floating point trust the {} side "
+        "(condition {:.3g} against {:.3g}): near a pole of the construction the closed forms and the direct "
+        "solve keep full accuracy while the construction loses digits (SPEC A6)",
+        cond_l <= cond_r ? "lhs" : "rhs", std::min(cond_l, cond_r), std::max(cond_l, cond_r));
+  };
   if (!std::isfinite(l.v) || !std::isfinite(r.v) || !std::isfinite(res.v)) {
     out.verdict = Verdict::Inconclusive;
     out.reason = "a side overflowed or is not a number in this precision";
+    set_trust();
   } else if (!std::isfinite(res.e)) {
     out.verdict = Verdict::Inconclusive;
     out.reason = "the error bound is unbounded: a divisor is not distinguishable from zero in this precision";
+    set_trust();
   } else if (std::abs(res.v) > res.e) {
     out.verdict = Verdict::Fails;
   } else if (res.e > std::sqrt(u) * scale) {
     out.verdict = Verdict::Inconclusive;
     out.reason = fmt::format("agreement within the error bound, but the bound is {:.3g} relative: too wide to confirm",
                              out.relative_error_bound);
+    set_trust();
   } else {
     out.verdict = Verdict::Holds;
   }

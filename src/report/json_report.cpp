@@ -23,7 +23,9 @@ json to_json(const ComparisonOutcome& c) {
   if (!c.tolerance.empty()) {
     j["tolerance"] = c.tolerance;
     j["relative_error_bound"] = c.relative_error_bound;
+    if (!c.tolerance_derivation.empty()) j["tolerance_derivation"] = c.tolerance_derivation;
   }
+  if (!c.trust_route.empty()) j["trust_route"] = c.trust_route;
   if (!c.reason.empty()) j["reason"] = c.reason;
   return j;
 }

@@ -21,6 +21,7 @@ std::string evidence(const ComparisonOutcome& c) {
   if (c.verdict == Verdict::Fails || !c.tolerance.empty()) s += "  residual " + c.residual;
   if (!c.tolerance.empty()) s += "  tol " + c.tolerance;
   if (!c.reason.empty()) s += "  (" + c.reason + ")";
+  if (!c.trust_route.empty()) s += "  trust: " + c.trust_route;
   return s;
 }
 

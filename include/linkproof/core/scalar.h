@@ -6,7 +6,10 @@
 //   Rational          exact (CLN cl_RA): a residual is zero or it is not;
 //   double, long double  plain IEEE, for speed (no verdicts are drawn from these);
 //   Tracked<double>, Tracked<long double>  IEEE with a running error bound (see tracked.h),
-//                     used for floating-point verdicts.
+//                     used for floating-point verdicts;
+//   MpFloat<Digits>   CLN long floats at a fixed precision (multiprecision.h).
+// Besides conversion and printing, every trait has less(a, b) (an order, for pivoting; Tracked
+// compares midpoints) and to_rational(x) (the exact value of a float, for measuring errors).
 #pragma once
 
 #include <cmath>
@@ -30,6 +33,8 @@ struct ScalarTraits<Rational> {
   static Rational from_rational(const Rational& q) { return q; }
   static bool is_zero(const Rational& x) { return cln::zerop(x); }
   static Rational abs(const Rational& x) { return cln::abs(x); }
+  static bool less(const Rational& a, const Rational& b) { return a < b; }
+  static Rational to_rational(const Rational& x) { return x; }
   static double to_double(const Rational& x) { return cln::double_approx(x); }
   static std::string to_string(const Rational& x) { return format_rational(x); }
 };
@@ -58,6 +63,8 @@ struct ScalarTraits<F> {
   static F from_rational(const Rational& q) { return round_rational<F>(q); }
   static bool is_zero(F x) { return x == 0; }
   static F abs(F x) { return std::abs(x); }
+  static bool less(F a, F b) { return a < b; }
+  static Rational to_rational(F x) { return exact_value_of(x); }
   static double to_double(F x) { return static_cast<double>(x); }
   static std::string to_string(F x) { return format_float(x); }
 };
@@ -73,6 +80,8 @@ struct ScalarTraits<Tracked<F>> {
   /// anything else and lets the radius say how much the result can be trusted.
   static bool is_zero(const Tracked<F>& x) { return x.v == 0 && x.e == 0; }
   static Tracked<F> abs(const Tracked<F>& x) { return linkproof::abs(x); }
+  static bool less(const Tracked<F>& a, const Tracked<F>& b) { return a.v < b.v; }
+  static Rational to_rational(const Tracked<F>& x) { return exact_value_of(x.v); }
   static double to_double(const Tracked<F>& x) { return static_cast<double>(x.v); }
   static std::string to_string(const Tracked<F>& x) { return format_float(x.v); }
 };
@@ -88,5 +97,9 @@ template <class T>
 T abs_value(const T& x) { return ScalarTraits<T>::abs(x); }
 template <class T>
 std::string to_text(const T& x) { return ScalarTraits<T>::to_string(x); }
+template <class T>
+bool is_less(const T& a, const T& b) { return ScalarTraits<T>::less(a, b); }
+template <class T>
+Rational to_exact(const T& x) { return ScalarTraits<T>::to_rational(x); }
 
 }  // namespace linkproof

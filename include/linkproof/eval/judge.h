@@ -27,6 +27,12 @@ struct ComparisonOutcome {
   std::string residual;           ///< lhs - rhs
   std::string tolerance;          ///< floating point only: the derived bound
   double relative_error_bound = 0;  ///< floating point only: tolerance / max(|lhs|, |rhs|)
+  /// floating point only: how the tolerance was derived (the two bounds, the conditions of
+  /// both sides, u), e.g. "tolerance 3.1e-15 = bound(lhs) 1.2e-15 + bound(rhs) 1.9e-15 + ...".
+  std::string tolerance_derivation;
+  /// for `inconclusive` in floating point: what to trust instead (exact arithmetic decides; of
+  /// the two floating-point sides, the better-conditioned one), SPEC A6.
+  std::string trust_route;
   std::string undefined_quantity; ///< for `undefined`: which quantity
   std::string reason;             ///< for `undefined`/`inconclusive`/`error`: why
 };

@@ -1,0 +1,98 @@
+// MpFloat<Digits>: a CLN long float (cln::cl_F) at a fixed precision of at least `Digits`
+// decimal digits, as a scalar type for the generic evaluation code (core/scalar.h).
+//
+// Why a compile-time precision: CLN combines two floats of different precisions by dropping to
+// the lower one (see STYLE.md, "GiNaC / CLN traps"), so a run-time precision stored per number
+// would silently degrade a whole computation if one constant were made at the wrong precision.
+// With the precision in the type, every MpFloat<D> is created by cl_float(x, float_format(D))
+// and every operation keeps that format, so mixing is a compile error.
+//
+// Precision: float_format(D) gives a long float with a mantissa of a whole number of machine
+// words, at least D decimal digits: D = 30, 50, 100, 1000 give p = 128, 192, 384, 3392 bits
+// (precision_bits()). Each operation is correctly rounded to p bits (CLN long-float +, -, *, /
+// round to nearest), so the unit roundoff is u = 2^-p (unit_roundoff()).
+//
+// Conversion from an exact rational rounds once, at the target precision (cl_float(q, format));
+// never through double. There is no NaN or infinity: a division by an exact zero throws
+// cln's division_by_0_exception; generic code tests is_zero before dividing, as it must for
+// exact rationals anyway. The ladder instantiates D = 30, 50, 100, 1000 (eval/ladder.h).
+#pragma once
+
+#include <cln/float.h>
+#include <cln/real.h>
+#include <cln/rational.h>
+#include <cln/float_io.h>
+
+#include <string>
+#include <string_view>
+
+#include "linkproof/core/scalar.h"
+
+namespace linkproof {
+
+template <int Digits>
+class MpFloat {
+  static_assert(Digits >= 20, "below 20 digits use double or long double");
+
+ public:
+  /// The CLN float format of this precision (made once).
+  static cln::float_format_t format() {
+    static const cln::float_format_t f = cln::float_format(static_cast<unsigned int>(Digits));
+    return f;
+  }
+  /// Mantissa bits p of the format (a multiple of the machine word size).
+  static int precision_bits() {
+    static const int p = static_cast<int>(cln::float_digits(cln::cl_float(1, format())));
+    return p;
+  }
+
+  MpFloat() : x_(cln::cl_float(0, format())) {}
+  /// Rounds the exact rational q to p bits.
+  explicit MpFloat(const Rational& q) : x_(cln::cl_float(q, format())) {}
+  /// Adopts a float; it is converted to this format if it has another one.
+  explicit MpFloat(const cln::cl_F& x) : x_(cln::cl_float(x, format())) {}
+
+  const cln::cl_F& value() const { return x_; }
+
+  friend MpFloat operator+(const MpFloat& a, const MpFloat& b) { return raw(a.x_ + b.x_); }
+  friend MpFloat operator-(const MpFloat& a, const MpFloat& b) { return raw(a.x_ - b.x_); }
+  friend MpFloat operator*(const MpFloat& a, const MpFloat& b) { return raw(a.x_ * b.x_); }
+  friend MpFloat operator/(const MpFloat& a, const MpFloat& b) { return raw(a.x_ / b.x_); }
+  friend MpFloat operator-(const MpFloat& a) { return raw(-a.x_); }
+  MpFloat& operator+=(const MpFloat& b) { return *this = *this + b; }
+  MpFloat& operator-=(const MpFloat& b) { return *this = *this - b; }
+  MpFloat& operator*=(const MpFloat& b) { return *this = *this * b; }
+  MpFloat& operator/=(const MpFloat& b) { return *this = *this / b; }
+
+ private:
+  struct Raw {};
+  MpFloat(Raw, cln::cl_F x) : x_(std::move(x)) {}
+  /// Results of operations on two numbers of this format are already in it.
+  static MpFloat raw(cln::cl_F x) { return MpFloat(Raw{}, std::move(x)); }
+  cln::cl_F x_;
+};
+
+/// Decimal text of a CLN float with CLN's exponent marker replaced by 'e' ("3.25e-7").
+std::string format_cln_float(const cln::cl_F& x);
+
+template <int Digits>
+struct ScalarTraits<MpFloat<Digits>> {
+  static constexpr bool is_exact = false;
+  static constexpr bool has_error_bound = false;
+  static constexpr std::string_view name = Digits == 30    ? "mp30"
+                                           : Digits == 50  ? "mp50"
+                                           : Digits == 100 ? "mp100"
+                                           : Digits == 1000 ? "mp1000"
+                                                            : "mp";
+  static MpFloat<Digits> from_rational(const Rational& q) { return MpFloat<Digits>(q); }
+  static bool is_zero(const MpFloat<Digits>& x) { return cln::zerop(x.value()); }
+  static MpFloat<Digits> abs(const MpFloat<Digits>& x) { return MpFloat<Digits>(cln::abs(x.value())); }
+  static bool less(const MpFloat<Digits>& a, const MpFloat<Digits>& b) { return a.value() < b.value(); }
+  /// Nearest double; 0 below double's range (CLN's exponent range is far wider).
+  static double to_double(const MpFloat<Digits>& x) { return cln::double_approx(x.value()); }
+  static std::string to_string(const MpFloat<Digits>& x) { return format_cln_float(x.value()); }
+  /// The exact rational value of the float (every binary float is a dyadic rational).
+  static Rational to_rational(const MpFloat<Digits>& x) { return cln::rational(x.value()); }
+};
+
+}  // namespace linkproof

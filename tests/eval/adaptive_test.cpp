@@ -1,0 +1,103 @@
+#include "linkproof/eval/adaptive.h"
+
+#include <gtest/gtest.h>
+
+#include <cln/integer.h>
+
+#include <cmath>
+
+#include "linkproof/eval/extreme_families.h"
+#include "linkproof/eval/random_polygon.h"
+#include "linkproof/geometry/closed_forms.h"
+
+namespace linkproof {
+namespace {
+
+struct DoubleCase {
+  std::string label;
+  Polygon<double> polygon;
+  InputRates<double> rates;
+};
+
+/// Random polygons and every extreme family at every parameter of the full study (exactly
+/// singular and nearly singular ones among them), rounded to double: the doubles are the input.
+std::vector<DoubleCase> corpus() {
+  std::vector<DoubleCase> out;
+  for (int n : {4, 5, 6, 9}) {
+    for (int i = 0; i < 30; ++i) {
+      const RandomPolygonCase c = generate_random_polygon(4242, n, i);
+      out.push_back({"seed 4242 n " + std::to_string(n) + " index " + std::to_string(i), c.polygon.convert<double>(),
+                     c.rates.convert<double>()});
+    }
+  }
+  for (const ExtremeFamily& f : extreme_families()) {
+    for (const Rational& x : f.full_values) {
+      if (f.name == "large_n" && x > 50) continue;
+      const ExtremeCase c = f.make(x);
+      out.push_back({f.name + " at " + format_rational(x), c.polygon.convert<double>(), c.rates.convert<double>()});
+    }
+  }
+  return out;
+}
+
+/// The exact truth for the double inputs, by another route (closed forms, Cramer's rule).
+std::optional<std::pair<Rational, Rational>> exact_truth(const DoubleCase& c) {
+  std::vector<Vec2<Rational>> joints;
+  for (const auto& k : c.polygon.joints()) joints.push_back({exact_value_of(k.x), exact_value_of(k.y)});
+  InputRates<Rational> in;
+  for (double w : c.rates.omega) in.omega.push_back(exact_value_of(w));
+  for (double w : c.rates.omega_dot) in.omega_dot.push_back(exact_value_of(w));
+  const Polygon<Rational> p(std::move(joints));
+  if (cln::zerop(p.dead_centre_determinant())) return std::nullopt;
+  const PolygonMotion<Rational> m = compute_closed_form_motion(p, in);
+  const auto n = static_cast<size_t>(p.n());
+  return std::make_pair(m.omega_dot[n - 2], m.omega_dot[n - 3]);
+}
+
+void check_corpus(const AdaptiveOptions& o) {
+  int escalated = 0, singular = 0;
+  for (const DoubleCase& c : corpus()) {
+    SCOPED_TRACE(c.label);
+    const AdaptiveResult r = compute_omega_dot_adaptive(c.polygon, c.rates, o);
+    const auto truth = exact_truth(c);
+    if (!truth) {
+      ++singular;
+      EXPECT_FALSE(r.defined);
+      continue;
+    }
+    ASSERT_TRUE(r.defined);
+    if (r.level != AdaptiveLevel::Double) ++escalated;
+    for (auto [value, bound, exact] : {std::tuple{r.omega_dot_n1, r.bound_n1, truth->first},
+                                       std::tuple{r.omega_dot_n2, r.bound_n2, truth->second}}) {
+      ASSERT_TRUE(std::isfinite(value) && std::isfinite(bound));
+      EXPECT_LE(cln::abs(exact - exact_value_of(value)), exact_value_of(bound)) << "value " << value;
+      if (o.relative_tolerance == 0)
+        EXPECT_EQ(value, round_to_nearest_double(exact)) << "not correctly rounded";
+      else
+        EXPECT_LE(bound, o.relative_tolerance * std::abs(value));
+    }
+  }
+  EXPECT_GE(singular, 1);   // the exact dead centre is in the corpus
+  EXPECT_GE(escalated, 1);  // and cases double cannot certify
+}
+
+TEST(Adaptive, CertifiedBoundIsNeverWrongOnACorpusWithSingularAndNearlySingularCases) {
+  check_corpus(AdaptiveOptions{});
+}
+
+TEST(Adaptive, CorrectlyRoundedModeIsNeverWrongOnTheSameCorpus) {
+  AdaptiveOptions o;
+  o.relative_tolerance = 0;
+  check_corpus(o);
+}
+
+TEST(Adaptive, RoundToNearestDoubleDecidesExactly) {
+  const Rational third = Rational(1) / 3;
+  EXPECT_EQ(round_to_nearest_double(third), 1.0 / 3.0);
+  // 1 + 2^-53 is a tie between 1 and 1 + 2^-52: ties to even gives 1.
+  EXPECT_EQ(round_to_nearest_double(1 + Rational(1) / cln::ash(cln::cl_I(1), 53)), 1.0);
+  EXPECT_EQ(round_to_nearest_double(1 + 3 * (Rational(1) / cln::ash(cln::cl_I(1), 54))), 1.0 + 0x1p-52);
+}
+
+}  // namespace
+}  // namespace linkproof
