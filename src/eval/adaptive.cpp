@@ -3,6 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include <optional>
+#include <vector>
+
+#include "linkproof/core/a_priori_bound.h"
+#include "linkproof/eval/omega_dot_fraction.h"
 #include "linkproof/eval/routes.h"
 
 namespace linkproof {
@@ -12,6 +17,16 @@ std::string_view to_string(AdaptiveLevel l) {
     case AdaptiveLevel::Double: return "double";
     case AdaptiveLevel::LongDouble: return "long double";
     case AdaptiveLevel::Exact: break;
+  }
+  return "exact";
+}
+
+std::string_view to_string(AdaptiveStage s) {
+  switch (s) {
+    case AdaptiveStage::APrioriDouble: return "a priori double";
+    case AdaptiveStage::RunningDouble: return "running double";
+    case AdaptiveStage::RunningLongDouble: return "running long double";
+    case AdaptiveStage::Exact: break;
   }
   return "exact";
 }
@@ -66,38 +81,96 @@ bool certified_bound(const Tracked<F>& x, double tolerance, double& value, doubl
   return bound <= tolerance * std::abs(value) && std::isfinite(bound);
 }
 
-template <class F>
-bool try_stage(const Polygon<double>& p, const InputRates<double>& in, const AdaptiveOptions& o, AdaptiveResult& r) {
-  using T = Tracked<F>;
-  // Inputs are exact (radius 0); sides are formed in tracked arithmetic, so their rounding is
-  // bounded too. No copies of the polygon: the route reads the doubles in place.
-  const auto exact = [](double x) { return T(static_cast<F>(x), 0); };
-  const auto side = [&](int j) {
+/// The polygon's joints and rates read in place as exact numbers of type T.
+template <class T, class Exact>
+auto side_reader(const Polygon<double>& p, const Exact& exact) {
+  return [&p, exact](int j) {
     const Vec2<double>& k0 = p.joint(j);
     const Vec2<double>& k1 = p.joint(j + 1);
     return Vec2<T>{exact(k1.x) - exact(k0.x), exact(k1.y) - exact(k0.y)};
   };
-  const auto rates = [&](int k, T& w, T& wd) {
+}
+template <class T, class Exact>
+auto rates_reader(const InputRates<double>& in, const Exact& exact) {
+  return [&in, exact](int k, T& w, T& wd) {
     w = exact(in.omega[static_cast<size_t>(k)]);
     wd = exact(in.omega_dot[static_cast<size_t>(k)]);
   };
-  RouteValue<T> v;
-  try {
-    v = direct_solve_core<T>(p.n(), side, rates);
-  } catch (const UndefinedQuantity&) {
-    return false;  // a pivot is exactly zero in F: let the exact stage decide
-  }
+}
+
+/// Accepts the stage's two tracked results if they meet the request (see the file comment of
+/// adaptive.h); fills r.
+template <class F>
+bool accept(const Tracked<F>& n1, const Tracked<F>& n2, const AdaptiveOptions& o, AdaptiveResult& r) {
   if (o.relative_tolerance == 0) {
-    if (!rounds_uniquely(v.omega_dot_n1, r.omega_dot_n1) || !rounds_uniquely(v.omega_dot_n2, r.omega_dot_n2))
-      return false;
+    if (!rounds_uniquely(n1, r.omega_dot_n1) || !rounds_uniquely(n2, r.omega_dot_n2)) return false;
     // The exact value lies in [v - e, v + e], which rounds entirely to the returned double.
-    r.bound_n1 = std::nextafter(static_cast<double>(v.omega_dot_n1.e + std::abs(v.omega_dot_n1.v - static_cast<F>(r.omega_dot_n1))), HUGE_VAL);
-    r.bound_n2 = std::nextafter(static_cast<double>(v.omega_dot_n2.e + std::abs(v.omega_dot_n2.v - static_cast<F>(r.omega_dot_n2))), HUGE_VAL);
+    r.bound_n1 = std::nextafter(static_cast<double>(n1.e + std::abs(n1.v - static_cast<F>(r.omega_dot_n1))), HUGE_VAL);
+    r.bound_n2 = std::nextafter(static_cast<double>(n2.e + std::abs(n2.v - static_cast<F>(r.omega_dot_n2))), HUGE_VAL);
     r.correctly_rounded = true;
     return true;
   }
-  return certified_bound(v.omega_dot_n1, o.relative_tolerance, r.omega_dot_n1, r.bound_n1) &&
-         certified_bound(v.omega_dot_n2, o.relative_tolerance, r.omega_dot_n2, r.bound_n2);
+  return certified_bound(n1, o.relative_tolerance, r.omega_dot_n1, r.bound_n1) &&
+         certified_bound(n2, o.relative_tolerance, r.omega_dot_n2, r.bound_n2);
+}
+
+/// Depths of the parts of compute_omega_dot_parts for n sides (data-independent; one O(n)
+/// integer pass per n, cached per thread).
+const OmegaDotParts<OperationDepth>& part_depths(int n) {
+  thread_local std::vector<std::optional<OmegaDotParts<OperationDepth>>> cache;
+  const auto i = static_cast<size_t>(n);
+  if (cache.size() <= i) cache.resize(i + 1);
+  if (!cache[i]) {
+    // Sides are differences of exact joints (depth 1); rates are exact inputs (depth 0).
+    cache[i] = compute_omega_dot_parts<OperationDepth>(
+        n, [](int) { return Vec2<OperationDepth>{{1}, {1}}; },
+        [](int, OperationDepth& w, OperationDepth& wd) { w = wd = OperationDepth{0}; });
+  }
+  return *cache[i];
+}
+
+/// Stage 1: the parts of the division-free fraction in ShadowedFloat<F> with a priori bounds,
+/// combined and divided in Tracked<F> (see eval/omega_dot_fraction.h for why the split).
+template <class F>
+bool try_a_priori(const Polygon<double>& p, const InputRates<double>& in, const AdaptiveOptions& o, AdaptiveResult& r) {
+  using S = ShadowedFloat<F>;
+  const auto exact = [](double x) { return S::exact(static_cast<F>(x)); };
+  // Sides enter as once-rounded differences (depth 1, as part_depths counts them).
+  const auto side = [&p](int j) {
+    const Vec2<double>& k0 = p.joint(j);
+    const Vec2<double>& k1 = p.joint(j + 1);
+    return Vec2<S>{S::rounded_once(static_cast<F>(k1.x) - static_cast<F>(k0.x)),
+                   S::rounded_once(static_cast<F>(k1.y) - static_cast<F>(k0.y))};
+  };
+  const OmegaDotParts<S> s = compute_omega_dot_parts<S>(p.n(), side, rates_reader<S>(in, exact));
+  const OmegaDotParts<OperationDepth>& k = part_depths(p.n());
+  bool finite = true;
+  const auto bounded = [&finite](const S& x, OperationDepth depth) {
+    const F e = a_priori_error_bound(x, depth.k);
+    finite = finite && std::isfinite(e) && std::isfinite(x.v);
+    return Tracked<F>(x.v, e);
+  };
+  const OmegaDotParts<Tracked<F>> t{bounded(s.d, k.d),           bounded(s.x0, k.x0),
+                                    bounded(s.x1, k.x1),         bounded(s.a_n1, k.a_n1),
+                                    bounded(s.a_n2, k.a_n2),     bounded(s.norm_a, k.norm_a),
+                                    bounded(s.norm_b, k.norm_b), bounded(s.a_dot_b, k.a_dot_b)};
+  if (!finite) return false;
+  const OmegaDotFraction<Tracked<F>> f = combine_omega_dot_parts(t);
+  return accept(f.numerator_n1 / f.denominator, f.numerator_n2 / f.denominator, o, r);
+}
+
+/// Stages 2 and 3: the direct solve in Tracked<F> (running error bound).
+template <class F>
+bool try_running(const Polygon<double>& p, const InputRates<double>& in, const AdaptiveOptions& o, AdaptiveResult& r) {
+  using T = Tracked<F>;
+  const auto exact = [](double x) { return T(static_cast<F>(x), 0); };
+  RouteValue<T> v;
+  try {
+    v = direct_solve_core<T>(p.n(), side_reader<T>(p, exact), rates_reader<T>(in, exact));
+  } catch (const UndefinedQuantity&) {
+    return false;  // a pivot is exactly zero in F: let the exact stage decide
+  }
+  return accept(v.omega_dot_n1, v.omega_dot_n2, o, r);
 }
 
 }  // namespace
@@ -106,12 +179,19 @@ AdaptiveResult compute_omega_dot_adaptive(const Polygon<double>& polygon, const 
                                           const AdaptiveOptions& options) {
   AdaptiveResult r;
   r.level = AdaptiveLevel::Double;
-  if (try_stage<double>(polygon, rates, options, r)) return r;
+  r.stage = AdaptiveStage::APrioriDouble;
+  if (try_a_priori<double>(polygon, rates, options, r)) return r;
+  r = {};
+  r.level = AdaptiveLevel::Double;
+  r.stage = AdaptiveStage::RunningDouble;
+  if (try_running<double>(polygon, rates, options, r)) return r;
   r = {};
   r.level = AdaptiveLevel::LongDouble;
-  if (try_stage<long double>(polygon, rates, options, r)) return r;
+  r.stage = AdaptiveStage::RunningLongDouble;
+  if (try_running<long double>(polygon, rates, options, r)) return r;
   r = {};
   r.level = AdaptiveLevel::Exact;
+  r.stage = AdaptiveStage::Exact;
   std::vector<Vec2<Rational>> joints;
   for (const auto& k : polygon.joints()) joints.push_back({exact_value_of(k.x), exact_value_of(k.y)});
   InputRates<Rational> in;

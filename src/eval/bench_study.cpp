@@ -119,27 +119,36 @@ void describe_family(FamilyCurve& curve) {
         "like 1/eps^3 and at D = 0 no value exists; only the exact arithmetic decides D = 0");
 }
 
-AdaptiveSummary adaptive_summary(std::string corpus, const std::vector<ExtremeCase>& cases, double budget) {
+/// "2^-26 relative" for a power of two, "correctly rounded" for 0.
+std::string request_text(const AdaptiveOptions& o) {
+  if (o.relative_tolerance == 0) return "correctly rounded";
+  return fmt::format("2^{} relative", std::ilogb(o.relative_tolerance));
+}
+
+AdaptiveSummary adaptive_summary(std::string corpus, const std::vector<ExtremeCase>& cases, const AdaptiveOptions& request,
+                                 double budget) {
   AdaptiveSummary s;
   s.corpus = std::move(corpus);
+  s.request = request_text(request);
   int within = 0;
   for (const ExtremeCase& c : cases) {
     const Polygon<double> p = c.polygon.convert<double>();
     const InputRates<double> in = c.rates.convert<double>();
-    const AdaptiveResult r = compute_omega_dot_adaptive(p, in);
+    const AdaptiveResult r = compute_omega_dot_adaptive(p, in, request);
     ++s.cases;
     if (!r.defined) {
       ++s.undefined;
       continue;
     }
     ++s.by_level[static_cast<size_t>(r.level)];
+    ++s.by_stage[static_cast<size_t>(r.stage)];
     double t_double = 0;
     try {
       t_double = seconds_per_call([&] { return compute_by_direct_solve(p, in); }, budget);
     } catch (const UndefinedQuantity&) {
       t_double = kInf;  // plain double cannot even produce a number
     }
-    const double t_adaptive = seconds_per_call([&] { return compute_omega_dot_adaptive(p, in); }, budget);
+    const double t_adaptive = seconds_per_call([&] { return compute_omega_dot_adaptive(p, in, request); }, budget);
     s.mean_double_seconds += std::isfinite(t_double) ? t_double : 0;
     s.mean_adaptive_seconds += t_adaptive;
     if (t_adaptive <= 2 * t_double) ++within;
@@ -226,9 +235,11 @@ BenchResult run_bench(const BenchOptions& o) {
     random_pentagons.push_back({c.polygon, c.rates});
   }
   const double budget = o.full ? 2e-4 : 2e-5;
-  result.adaptive.push_back(adaptive_summary("random pentagons", random_pentagons, budget));
-  tick();
-  result.adaptive.push_back(adaptive_summary("extreme families", extreme_corpus, budget));
+  for (const AdaptiveOptions& request : {AdaptiveOptions{}, AdaptiveOptions{0x1p-40}, AdaptiveOptions{0}}) {
+    result.adaptive.push_back(adaptive_summary("random pentagons", random_pentagons, request, budget));
+    tick();
+  }
+  result.adaptive.push_back(adaptive_summary("extreme families", extreme_corpus, AdaptiveOptions{}, budget));
   tick();
   return result;
 }

@@ -89,12 +89,15 @@ std::string to_markdown(const BenchResult& r) {
                        cond(Route::ClosedForms));
     }
   }
-  o += "\n# Adaptive mode (certified omega-dot: double -> long double -> exact)\n\n";
-  o += "| corpus | cases | by double | by long double | by exact | undefined | escalation rate | plain double | "
-       "adaptive | cost ratio | within 2x |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  o += "\n# Adaptive mode (certified omega-dot: a priori double -> running double -> running long double -> "
+       "exact)\n\n";
+  o += "| corpus | request | cases | by a priori double | by running double | by long double | by exact | undefined | "
+       "escalation rate | plain double | adaptive | cost ratio | within 2x |\n"
+       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const AdaptiveSummary& a : r.adaptive)
-    o += fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f}% | {} | {} | {:.2f} | {:.1f}% |\n", a.corpus, a.cases,
-                     a.by_level[0], a.by_level[1], a.by_level[2], a.undefined, 100 * a.escalation_rate(),
+    o += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f}% | {} | {} | {:.2f} | {:.1f}% |\n", a.corpus,
+                     a.request, a.cases, a.by_stage[0], a.by_stage[1], a.by_stage[2], a.by_stage[3], a.undefined,
+                     100 * a.escalation_rate(),
                      time_text(a.mean_double_seconds), time_text(a.mean_adaptive_seconds),
                      a.mean_double_seconds > 0 ? a.mean_adaptive_seconds / a.mean_double_seconds : 0.0,
                      100 * a.fraction_within_2x);
@@ -156,7 +159,13 @@ json to_json(const BenchResult& r) {
   for (const AdaptiveSummary& a : r.adaptive)
     j["adaptive"].push_back(
         {{"corpus", a.corpus},
+         {"request", a.request},
          {"cases", a.cases},
+         {"by_stage",
+          {{"a priori double", a.by_stage[0]},
+           {"running double", a.by_stage[1]},
+           {"running long double", a.by_stage[2]},
+           {"exact", a.by_stage[3]}}},
          {"by_level", {{"double", a.by_level[0]}, {"long double", a.by_level[1]}, {"exact", a.by_level[2]}}},
          {"undefined", a.undefined},
          {"escalation_rate", a.escalation_rate()},

@@ -50,8 +50,9 @@ TEST(BenchCli, TinyBenchWritesTableJsonAndPlotsIntoTheOutputDirectory) {
   const nlohmann::json& fam = j["families"][0];
   for (const char* k : {"name", "parameter", "degenerate_quantity", "singular", "trust_route", "findings", "points"})
     EXPECT_TRUE(fam.contains(k)) << k;
-  ASSERT_EQ(j["adaptive"].size(), 2u);
-  for (const char* k : {"corpus", "cases", "by_level", "escalation_rate", "cost_ratio", "fraction_within_2x"})
+  ASSERT_EQ(j["adaptive"].size(), 4u);  // random pentagons at three requests; extreme families
+  for (const char* k : {"corpus", "request", "cases", "by_stage", "by_level", "escalation_rate", "cost_ratio",
+                        "fraction_within_2x"})
     EXPECT_TRUE(j["adaptive"][0].contains(k)) << k;
 
   const std::string svg = slurp(dir / "family_q_infinity.svg");

@@ -4,7 +4,9 @@
 
 #include <cln/integer.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "linkproof/eval/extreme_families.h"
 #include "linkproof/eval/random_polygon.h"
@@ -56,6 +58,7 @@ std::optional<std::pair<Rational, Rational>> exact_truth(const DoubleCase& c) {
 
 void check_corpus(const AdaptiveOptions& o) {
   int escalated = 0, singular = 0;
+  std::array<int, 4> by_stage{};
   for (const DoubleCase& c : corpus()) {
     SCOPED_TRACE(c.label);
     const AdaptiveResult r = compute_omega_dot_adaptive(c.polygon, c.rates, o);
@@ -67,6 +70,7 @@ void check_corpus(const AdaptiveOptions& o) {
     }
     ASSERT_TRUE(r.defined);
     if (r.level != AdaptiveLevel::Double) ++escalated;
+    ++by_stage[static_cast<size_t>(r.stage)];
     for (auto [value, bound, exact] : {std::tuple{r.omega_dot_n1, r.bound_n1, truth->first},
                                        std::tuple{r.omega_dot_n2, r.bound_n2, truth->second}}) {
       ASSERT_TRUE(std::isfinite(value) && std::isfinite(bound));
@@ -77,6 +81,8 @@ void check_corpus(const AdaptiveOptions& o) {
         EXPECT_LE(bound, o.relative_tolerance * std::abs(value));
     }
   }
+  for (size_t i = 0; i < by_stage.size(); ++i)
+    std::printf("%s: %d\n", std::string(to_string(static_cast<AdaptiveStage>(i))).c_str(), by_stage[i]);
   EXPECT_GE(singular, 1);   // the exact dead centre is in the corpus
   EXPECT_GE(escalated, 1);  // and cases double cannot certify
 }
@@ -89,6 +95,27 @@ TEST(Adaptive, CorrectlyRoundedModeIsNeverWrongOnTheSameCorpus) {
   AdaptiveOptions o;
   o.relative_tolerance = 0;
   check_corpus(o);
+}
+
+/// How many of kCases random pentagons the first (a priori double) stage certifies.
+int certified_by_first_stage(const AdaptiveOptions& o, std::uint64_t seed, int cases) {
+  int a_priori = 0;
+  for (int i = 0; i < cases; ++i) {
+    const RandomPolygonCase c = generate_random_polygon(seed, 5, i);
+    const AdaptiveResult r = compute_omega_dot_adaptive(c.polygon.convert<double>(), c.rates.convert<double>(), o);
+    if (r.stage == AdaptiveStage::APrioriDouble) ++a_priori;
+  }
+  std::printf("seed %llu, tolerance %g: %d of %d random pentagons certified by the a priori double stage\n",
+              static_cast<unsigned long long>(seed), o.relative_tolerance, a_priori, cases);
+  return a_priori;
+}
+
+TEST(Adaptive, TheAPrioriDoubleStageCertifiesAtLeast99PercentOfRandomPentagonsAtTheDefaultRequest) {
+  EXPECT_GE(certified_by_first_stage(AdaptiveOptions{}, 20261121, 2000), 2000 * 99 / 100);
+}
+
+TEST(Adaptive, TheAPrioriDoubleStageCertifiesAtLeast98PercentOfRandomPentagonsAt40Bits) {
+  EXPECT_GE(certified_by_first_stage(AdaptiveOptions{0x1p-40}, 20261121, 2000), 2000 * 98 / 100);
 }
 
 TEST(Adaptive, RoundToNearestDoubleDecidesExactly) {

@@ -2,16 +2,20 @@
 // correctly rounded to double, paying for exact arithmetic only where double cannot decide
 // (the filtered-predicate idea of Shewchuk's robust predicates and of CGAL's filtered kernels).
 //
-// The inputs are doubles, taken as exact numbers (every double is a dyadic rational). Route:
-// the direct solve of the differentiated loop closure (eval/routes.h, Route::DirectSolve),
-// allocation-free and backward-stable away from the dead centre. Stages:
-//   1. Tracked<double>: the double result with a rigorous running error bound (core/tracked.h).
-//      Accepted if the bound is finite and meets the request.
-//   2. Tracked<long double>: the same with 11 more bits; accepted on the same test.
-//   3. Exact rationals: the exact value, rounded to nearest double; its bound is the exact
+// The inputs are doubles, taken as exact numbers (every double is a dyadic rational). Stages,
+// each accepted if its bound is finite and meets the request, else the next one runs:
+//   1. A priori double: omega-dot = P / D^3 by the division-free fraction (eval/omega_dot_fraction.h).
+//      Its O(n) sums run in ShadowedFloat<double>, bounded by gamma_k times the magnitude shadow
+//      (core/a_priori_bound.h); the O(1) combination runs in Tracked<double>. About two double
+//      evaluations: the filter that makes the common case cheap (Shewchuk's semi-static filter).
+//   2. Running double: the direct solve of the differentiated loop closure (eval/routes.h,
+//      Route::DirectSolve) in Tracked<double>, a rigorous running error bound (core/tracked.h),
+//      tighter than the a priori one where sums cancel or n is large.
+//   3. Running long double: the same with 11 more bits.
+//   4. Exact rationals: the exact value, rounded to nearest double; its bound is the exact
 //      rounding error. Undefined only at the exact dead centre D = 0 (the only singularity).
-// Requests: a relative bound |value - exact| <= tolerance |value| (default 2^-40, i.e. at least
-// 40 certified bits), or correct rounding (tolerance = 0): the value is the double nearest to
+// Requests: a relative bound |value - exact| <= tolerance |value| (default 2^-26, i.e. at least
+// 26 certified bits), or correct rounding (tolerance = 0): the value is the double nearest to
 // the exact result, certified when every real in [v - e, v + e] rounds to the same double.
 #pragma once
 
@@ -22,12 +26,19 @@
 
 namespace linkproof {
 
+/// The arithmetic that delivered a result.
 enum class AdaptiveLevel { Double = 0, LongDouble = 1, Exact = 2 };
 std::string_view to_string(AdaptiveLevel l);
+/// The stage that delivered a result (see the file comment); stages 1 and 2 are level Double.
+enum class AdaptiveStage { APrioriDouble, RunningDouble, RunningLongDouble, Exact };
+std::string_view to_string(AdaptiveStage s);
 
 struct AdaptiveOptions {
-  /// Requested relative bound; 0 requests correct rounding in double.
-  double relative_tolerance = 0x1p-40;
+  /// Requested relative bound; 0 requests correct rounding in double. The default is 2^-26
+  /// (about sqrt(u) of double): the threshold below which linkproof's floating-point verdicts
+  /// trust a figure (eval/judge.h), so that a value adaptive mode returns by default is one a
+  /// verdict would accept. Ask for more (e.g. 2^-40) or for correct rounding when needed.
+  double relative_tolerance = 0x1p-26;
 };
 
 struct AdaptiveResult {
@@ -39,8 +50,9 @@ struct AdaptiveResult {
   double bound_n1 = 0, bound_n2 = 0;
   /// True if both values are certified to be the nearest doubles to the exact results.
   bool correctly_rounded = false;
-  /// The stage that delivered the result.
+  /// The arithmetic and the stage that delivered the result.
   AdaptiveLevel level = AdaptiveLevel::Double;
+  AdaptiveStage stage = AdaptiveStage::APrioriDouble;
 };
 
 /// See the file comment. Never throws for a valid polygon (n >= 4, no zero sides).

@@ -58,6 +58,8 @@ struct FamilyCurve {
 
 struct AdaptiveSummary {
   std::string corpus;
+  std::string request;      ///< "2^-26 relative" (the default), "2^-40 relative", "correctly rounded"
+  std::array<int, 4> by_stage{};  ///< delivered by a priori double, running double, running long double, exact
   int cases = 0;
   std::array<int, 3> by_level{};  ///< delivered by double, long double, exact
   int undefined = 0;
