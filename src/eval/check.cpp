@@ -96,9 +96,11 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
   return r;
 }
 
-int exit_status(const PolygonCheck& check) {
+int exit_status(const PolygonCheck& check) { return exit_status(check.claims); }
+
+int exit_status(const std::vector<ClaimOutcome>& outcomes) {
   int status = 0;
-  for (const auto& c : check.claims) {
+  for (const auto& c : outcomes) {
     if (c.verdict == Verdict::Error) return 3;
     if (c.is_unexpected_failure()) status = 1;
   }

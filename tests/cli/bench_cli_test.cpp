@@ -6,21 +6,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli.h"
+#include "support/cli_run.h"
 
 namespace linkproof {
 namespace {
 
-struct BenchRun {
-  int code;
-  std::string out, err;
-};
-
-BenchRun run_cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = cli::run(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using test::run_cli;
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -32,7 +23,7 @@ std::string slurp(const std::filesystem::path& p) {
 TEST(BenchCli, TinyBenchWritesTableJsonAndPlotsIntoTheOutputDirectory) {
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "linkproof_bench_cli";
   std::filesystem::remove_all(dir);
-  const BenchRun r = run_cli({"bench", "--families", "q_infinity,dead_centre", "--cases", "1", "--time-budget-ms",
+  const test::CliRun r = run_cli({"bench", "--families", "q_infinity,dead_centre", "--cases", "1", "--time-budget-ms",
                               "0.05", "--adaptive-cases", "5", "--out", dir.string()});
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* f : {"bench.md", "bench.json", "pareto.svg", "family_q_infinity.svg", "family_dead_centre.svg"})
@@ -63,7 +54,7 @@ TEST(BenchCli, TinyBenchWritesTableJsonAndPlotsIntoTheOutputDirectory) {
 }
 
 TEST(BenchCli, UnknownFamilyIsBadInputNamingTheOption) {
-  const BenchRun r = run_cli({"bench", "--families", "no_such_family", "--cases", "1"});
+  const test::CliRun r = run_cli({"bench", "--families", "no_such_family", "--cases", "1"});
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--families"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no_such_family"), std::string::npos) << r.err;

@@ -5,21 +5,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli.h"
+#include "support/cli_run.h"
 
 namespace linkproof {
 namespace {
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run_cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = cli::run(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliRun;
+using test::run_cli;
 
 std::string scene(const std::string& name) { return std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/" + name; }
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <sstream>
 
-#include "cli.h"
+#include "support/cli_run.h"
 #include "linkproof/eval/mechanism_check.h"
 #include "mechanism/mechanism_test_support.h"
 
@@ -93,16 +93,8 @@ TEST(MechanismScene, ToleranceAdmitsApproximatelyClosedData) {
   EXPECT_NE(input_error(tight).find("does not close"), std::string::npos);
 }
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run_cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = cli::run(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliRun;
+using test::run_cli;
 
 TEST(MechanismCli, BadMechanismSceneExitsTwo) {
   const std::string path = ::testing::TempDir() + "bad_mechanism.yaml";

@@ -63,5 +63,8 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context);
 
 /// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim's evaluation errored.
 int exit_status(const PolygonCheck& check);
+/// The CLI's exit code of a list of outcomes: 3 if any verdict is Error, else 1 if a true claim
+/// fails, else 0. Shared by polygon and mechanism checks.
+int exit_status(const std::vector<ClaimOutcome>& outcomes);
 
 }  // namespace linkproof
