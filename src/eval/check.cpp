@@ -71,10 +71,10 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
   with_scalar_type(a, [&]<class T>() {
     const PolygonContext<T> ctx = build_polygon_context<T>(engine, polygon, rates);
     r.tolerance_rule = tolerance_rule<T>();
-    if (a != Arithmetic::Exact) r.determinant = to_text(ctx.closed.has_value() ? ctx.closed.get().D : from_int<T>(0));
+    if (a != Arithmetic::Exact) r.determinant = to_text(ctx.closed().has_value() ? ctx.closed().get().D : from_int<T>(0));
     for (int j = 0; j < r.n; ++j) {
-      r.omega.push_back(ctx.truth.has_value() ? std::optional(to_text(ctx.truth.get().omega[j])) : std::nullopt);
-      r.omega_dot.push_back(ctx.truth.has_value() ? std::optional(to_text(ctx.truth.get().omega_dot[j])) : std::nullopt);
+      r.omega.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega[j])) : std::nullopt);
+      r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega_dot[j])) : std::nullopt);
     }
     for (const Claim& claim : catalogue) {
       if (!claim.info.applies_to(r.n)) {

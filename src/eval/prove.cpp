@@ -1,5 +1,7 @@
 #include "linkproof/eval/prove.h"
 
+#include <algorithm>
+
 #include <chrono>
 #include <map>
 #include <set>
@@ -69,15 +71,15 @@ bool same_up_to_constant(const ex& a, const ex& b) {
   return GiNaC::is_exactly_a<GiNaC::numeric>(GiNaC::normal(a / b));
 }
 
-/// Named degeneracies of SPEC A6 as polynomials in the symbolic polygon's coordinates.
-std::vector<std::pair<ex, std::string>> named_degeneracies(const PolygonContext<ex>& c) {
+/// Named degeneracies of SPEC A6 as polynomials in the symbolic polygon's coordinates: of the
+/// sides (cheap), or of the construction's points (built only if a factor is still unnamed).
+std::vector<std::pair<ex, std::string>> side_degeneracies(const PolygonContext<ex>& c) {
   std::vector<std::pair<ex, std::string>> v;
   const int n = c.n;
   const Vec2<ex> a = c.r(n - 2), b = c.r(n - 1);
   v.emplace_back(norm2(a), "r_{n-2} = 0: coincident joints");
   v.emplace_back(norm2(b), "r_{n-1} = 0: coincident joints");
   v.emplace_back(cross(a, b), "dead centre: D = r_{n-2} x r_{n-1} = 0 (the mechanism's singularity: the truth is undefined)");
-  const auto numerator_of = [](const ex& e) { return GiNaC::numer(GiNaC::normal(e)); };
   for (int j = 1; j <= n - 3; ++j) {
     const std::string s = std::to_string(j);
     const Vec2<ex> rj = c.r(j);
@@ -86,16 +88,25 @@ std::vector<std::pair<ex, std::string>> named_degeneracies(const PolygonContext<
     v.emplace_back(cross(rj, a), "r_" + s + " parallel to r_{n-2}: Q_" + s + " = K'_" + s + ", beta_" + s + " undefined");
     v.emplace_back(norm2(rj + a + b), "K'_" + s + " = K_n: the ground line K_nK'_" + s + " is undefined");
     v.emplace_back(norm2(rj), "r_" + s + " = 0: coincident joints");
-    const auto& k = c.construction[static_cast<size_t>(j - 1)];
-    if (k.q.has_value() && k.p_prime.has_value()) {
-      const Vec2<ex> q = k.q.get(), p = k.p_prime.get(), kn1 = c.polygon.joint(n - 1), kn = c.polygon.joint(n),
-                     kn2 = c.polygon.joint(n - 2);
-      v.emplace_back(numerator_of(norm2(kn - q)), "Q_" + s + " = K_n: the reference segment of i_{n-1," + s + "} is null");
-      v.emplace_back(numerator_of(norm2(p - kn2)), "P'_" + s + " = K_{n-2}: the reference segment of i_{n-2," + s + "} is null");
-      v.emplace_back(numerator_of(cross(kn1 - q, p - q)), "beta_" + s + " = 0 or pi: Q_" + s + ", K_{n-1}, P'_" + s + " collinear");
-      v.emplace_back(numerator_of(norm2(kn1 - q)), "Q_" + s + " = K_{n-1}: the ray Q_" + s + "K_{n-1} is null");
-      v.emplace_back(numerator_of(cross(kn1 - p, q - p)), "gamma_" + s + " = 0 or pi: P'_" + s + ", K_{n-1}, Q_" + s + " collinear");
-    }
+  }
+  return v;
+}
+
+std::vector<std::pair<ex, std::string>> construction_degeneracies(const PolygonContext<ex>& c) {
+  std::vector<std::pair<ex, std::string>> v;
+  const int n = c.n;
+  const auto numerator_of = [](const ex& e) { return GiNaC::numer(GiNaC::normal(e)); };
+  for (int j = 1; j <= n - 3; ++j) {
+    const std::string s = std::to_string(j);
+    const auto& k = c.construction_for()[static_cast<size_t>(j - 1)];
+    if (!k.q.has_value() || !k.p_prime.has_value()) continue;
+    const Vec2<ex> q = k.q.get(), p = k.p_prime.get(), kn1 = c.polygon.joint(n - 1), kn = c.polygon.joint(n),
+                   kn2 = c.polygon.joint(n - 2);
+    v.emplace_back(numerator_of(norm2(kn - q)), "Q_" + s + " = K_n: the reference segment of i_{n-1," + s + "} is null");
+    v.emplace_back(numerator_of(norm2(p - kn2)), "P'_" + s + " = K_{n-2}: the reference segment of i_{n-2," + s + "} is null");
+    v.emplace_back(numerator_of(cross(kn1 - q, p - q)), "beta_" + s + " = 0 or pi: Q_" + s + ", K_{n-1}, P'_" + s + " collinear");
+    v.emplace_back(numerator_of(norm2(kn1 - q)), "Q_" + s + " = K_{n-1}: the ray Q_" + s + "K_{n-1} is null");
+    v.emplace_back(numerator_of(cross(kn1 - p, q - p)), "gamma_" + s + " = 0 or pi: P'_" + s + ", K_{n-1}, Q_" + s + " collinear");
   }
   return v;
 }
@@ -118,19 +129,22 @@ std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const 
     add_factors(GiNaC::denom(e));
   }
   for (const ex& e : sides) add_factors(GiNaC::denom(GiNaC::normal(e)));
-  std::vector<std::pair<ex, std::string>> named;
-  for (auto& [poly, meaning] : named_degeneracies(c))
-    for (const ex& f : irreducible_factors(poly)) named.emplace_back(f, meaning);
+  std::vector<std::string> meanings(factors.size());
+  const auto name_from = [&](const std::vector<std::pair<ex, std::string>>& degeneracies) {
+    std::vector<std::pair<ex, std::string>> named;
+    for (auto& [poly, meaning] : degeneracies)
+      for (const ex& f : irreducible_factors(poly)) named.emplace_back(f, meaning);
+    for (size_t i = 0; i < factors.size(); ++i)
+      for (const auto& [g, m] : named)
+        if (meanings[i].empty() && same_up_to_constant(factors[i], g)) meanings[i] = m;
+  };
+  name_from(side_degeneracies(c));
+  if (std::any_of(meanings.begin(), meanings.end(), [](const std::string& m) { return m.empty(); }))
+    name_from(construction_degeneracies(c));
   std::vector<ExceptionalSet> out;
-  for (const ex& f : factors) {
-    std::string meaning;
-    for (const auto& [g, m] : named)
-      if (same_up_to_constant(f, g)) {
-        meaning = m;
-        break;
-      }
-    out.push_back({ScalarTraits<ex>::to_string(f), meaning.empty() ? "unnamed: a factor of a denominator" : meaning});
-  }
+  for (size_t i = 0; i < factors.size(); ++i)
+    out.push_back({ScalarTraits<ex>::to_string(factors[i]),
+                   meanings[i].empty() ? "unnamed: a factor of a denominator" : meanings[i]});
   return out;
 }
 
@@ -195,7 +209,9 @@ PerNProof prove_for_n(GroundTruthEngine& engine, const DataClaim& claim, int n, 
   r.proved = r.first_nonzero.empty();
   for (const ex& e : compared) r.tree_size += expression_tree_size(e);
   r.dag_size = Tape(compared, sp.symbols(), "claim").size();
-  if (except && r.proved) *except = exceptional_sets(ctx, log.tested(), sides);
+  // A copy: naming the factors may build the construction, which logs zero tests of its own.
+  const std::vector<ex> tested = log.tested();
+  if (except && r.proved) *except = exceptional_sets(ctx, tested, sides);
   r.seconds = since(start);
   return r;
 }

@@ -177,7 +177,7 @@ class ClaimEvaluator {
     const std::string& s = w.name;
     if (w.kind == WordKind::Index) throw error("'" + s + "' is an index, not a number");
     if (s == "omega_out" || s == "omega_cpl") {
-      const auto& vc = c_.velocity_coefficients.get();
+      const auto& vc = c_.velocity_coefficients().get();
       const auto& coef = s == "omega_out" ? vc.first : vc.second;
       RatePoly<T> p;
       for (int j = 1; j <= c_.inputs(); ++j)
@@ -185,10 +185,10 @@ class ClaimEvaluator {
       return Value::number(p);
     }
     if (s == "omega_dot_out" || s == "omega_dot_cpl") {
-      const auto& tc = s == "omega_dot_out" ? c_.coefficients.get().first : c_.coefficients.get().second;
+      const auto& tc = s == "omega_dot_out" ? c_.coefficients().get().first : c_.coefficients().get().second;
       return Value::number(acceleration_poly(tc, 0));
     }
-    const ClosedForms<T>& cf = c_.closed.get();
+    const ClosedForms<T>& cf = c_.closed().get();
     if (s == "D") return Value::number(constant(cf.D));
     if (reading_.signed_phi) {
       if (s == "cot_phi") return Value::number(constant(cf.cot_phi));
@@ -261,11 +261,11 @@ class ClaimEvaluator {
     if (s == "cot_gamma") return constant(construction(j).cot_gamma.get());
     if (s == "lambda") return constant(construction(j).lambda.get());
     if (s == "mu") return constant(construction(j).mu.get());
-    if (s == "i_out_closed") return constant(c_.closed.get().i_out[k]);
-    if (s == "i_cpl_closed") return constant(c_.closed.get().i_cpl[k]);
-    if (s == "lambda_closed") return constant(c_.closed.get().lambda[k]);
-    if (s == "mu_closed") return constant(c_.closed.get().mu[k]);
-    const FourBarTruth<T>& fb = c_.four_bars[k];
+    if (s == "i_out_closed") return constant(c_.closed().get().i_out[k]);
+    if (s == "i_cpl_closed") return constant(c_.closed().get().i_cpl[k]);
+    if (s == "lambda_closed") return constant(c_.closed().get().lambda[k]);
+    if (s == "mu_closed") return constant(c_.closed().get().mu[k]);
+    const FourBarTruth<T>& fb = c_.four_bar(static_cast<int>(k) + 1);
     const auto w = RatePoly<T>::variable({j, RateVariable::Omega});
     if (s == "fourbar_ratio_out") return constant(fb.ratio_out.get());
     if (s == "fourbar_ratio_cpl") return constant(fb.ratio_cpl.get());
@@ -283,14 +283,14 @@ class ClaimEvaluator {
     if (k == n) return constant(0);
     const bool out = k == n - 1;
     if (!acceleration) {
-      const auto& vc = c_.velocity_coefficients.get();
+      const auto& vc = c_.velocity_coefficients().get();
       RatePoly<T> p;
       for (int j = 1; j <= n - 3; ++j)
         p = p + constant((out ? vc.first : vc.second)[static_cast<size_t>(j - 1)]) *
                     RatePoly<T>::variable({j, RateVariable::Omega});
       return p;
     }
-    return acceleration_poly(out ? c_.coefficients.get().first : c_.coefficients.get().second, 0);
+    return acceleration_poly(out ? c_.coefficients().get().first : c_.coefficients().get().second, 0);
   }
 
   /// Acceleration of joint K_k along the chain from the fixed joint K_1 (eqs. 8, 12).

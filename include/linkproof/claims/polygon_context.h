@@ -1,10 +1,12 @@
-// Everything a claim about an n-side polygon may refer to, computed once per configuration in
-// scalar type T: the exact ground truth (symbolic engine), the closed forms, the paper's
-// construction for every input side, and the ground truth of each four-bar j solved on its
-// own (the same engine at n = 4, independent of the construction).
+// Everything a claim about an n-side polygon may refer to, computed at most once per
+// configuration in scalar type T, on first use: the exact ground truth (symbolic engine), the
+// closed forms, the paper's construction for every input side, and the ground truth of each
+// four-bar j solved on its own (the same engine at n = 4, independent of the construction).
 #pragma once
 
+#include <algorithm>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -29,34 +31,77 @@ struct FourBarTruth {
       Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::undefined("", "");
 };
 
+/// The polygon K'_j, K_{n-2}, K_{n-1}, K_n of four-bar j.
 template <class T>
-struct PolygonContext {
+Polygon<T> make_four_bar_polygon(const Polygon<T>& p, int j) {
+  const int n = p.n();
+  return Polygon<T>({p.joint(n - 2) - p.side(j), p.joint(n - 2), p.joint(n - 1), p.joint(n)});
+}
+
+/// Every quantity is computed on first use and kept: a claim that reads only the closed forms
+/// never pays for the engine or the construction, and in a symbolic proof it never records
+/// their zero tests (which would widen the exceptional set with degeneracies it does not have).
+/// The engine passed at construction must outlive the context.
+template <class T>
+class PolygonContext {
+ public:
+  /// `dead_centre` says whether D = 0, decided by the caller (exactly, from the exact input or
+  /// identically for symbolic coordinates): a rounded D must not turn "does not exist" into a
+  /// huge number.
+  PolygonContext(GroundTruthEngine& engine, Polygon<T> polygon_in, InputRates<T> rates_in, bool dead_centre)
+      : n(polygon_in.n()), polygon(std::move(polygon_in)), rates(std::move(rates_in)), engine_(&engine),
+        dead_centre_(dead_centre), four_bars_(static_cast<size_t>(std::max(n - 3, 0))) {}
+
   int n = 0;
   Polygon<T> polygon;
   InputRates<T> rates;
-  Defined<PolygonMotion<T>> truth = Defined<PolygonMotion<T>>::undefined("", "");
-  Defined<ClosedForms<T>> closed = Defined<ClosedForms<T>>::undefined("", "");
+
+  /// The engine's exact motion of the polygon.
+  const Defined<PolygonMotion<T>>& truth() const {
+    return cached(truth_, [&] { return engine_->motion(polygon, rates); });
+  }
+  /// The closed forms of SPEC A3.
+  const Defined<ClosedForms<T>>& closed() const {
+    return cached(closed_, [&] { return compute_closed_forms(polygon); });
+  }
   /// Exact term coefficients of omega-dot_{n-1,n} (first) and omega-dot_{n-2,n} (second).
-  Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>> coefficients =
-      Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::undefined("", "");
+  const Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>& coefficients() const {
+    return cached(coefficients_, [&] { return engine_->coefficients(polygon); });
+  }
   /// Coefficients of omega_j in the exact omega_{n-1,n} (first) and omega_{n-2,n} (second),
   /// j = 1..n-3 at [j-1]: the engine's motion for a unit input j.
-  Defined<std::pair<std::vector<T>, std::vector<T>>> velocity_coefficients =
-      Defined<std::pair<std::vector<T>, std::vector<T>>>::undefined("", "");
-  std::vector<FourBarConstruction<T>> construction;  ///< j = 1..n-3 at [j-1], correct reading
-  std::vector<FourBarTruth<T>> four_bars;            ///< j = 1..n-3 at [j-1]
-
-  /// The construction under another reading (SPEC A5), built on first use and kept.
-  const std::vector<FourBarConstruction<T>>& construction_for(const ConstructionReading& r) const {
+  const Defined<std::pair<std::vector<T>, std::vector<T>>>& velocity_coefficients() const {
+    return cached(velocity_coefficients_, [&] {
+      const T zero = from_int<T>(0), one = from_int<T>(1);
+      std::pair<std::vector<T>, std::vector<T>> v;
+      for (int j = 1; j <= inputs(); ++j) {
+        InputRates<T> unit{std::vector<T>(static_cast<size_t>(inputs()), zero),
+                           std::vector<T>(static_cast<size_t>(inputs()), zero)};
+        unit.omega[static_cast<size_t>(j - 1)] = one;
+        const PolygonMotion<T> m = engine_->motion(polygon, unit);
+        v.first.push_back(m.omega[static_cast<size_t>(n - 2)]);
+        v.second.push_back(m.omega[static_cast<size_t>(n - 3)]);
+      }
+      return v;
+    });
+  }
+  /// The construction of every four-bar j = 1..n-3 (at [j-1]) under a reading (SPEC A5; the
+  /// default is the correct reading).
+  const std::vector<FourBarConstruction<T>>& construction_for(const ConstructionReading& r = {}) const {
     const int key = r.displaced_start | r.beta_towards_p_prime << 1 | r.beta_ccw_positive << 2 | r.signed_ratios << 3;
-    if (key == 15) return construction;
-    auto it = other_readings_.find(key);
-    if (it == other_readings_.end()) {
+    auto it = constructions_.find(key);
+    if (it == constructions_.end()) {
       std::vector<FourBarConstruction<T>> v;
       for (int j = 1; j <= inputs(); ++j) v.push_back(construct_four_bar(polygon, j, r));
-      it = other_readings_.emplace(key, std::move(v)).first;
+      it = constructions_.emplace(key, std::move(v)).first;
     }
     return it->second;
+  }
+  /// Four-bar j (1 <= j <= n-3) solved on its own by the engine.
+  const FourBarTruth<T>& four_bar(int j) const {
+    std::optional<FourBarTruth<T>>& slot = four_bars_[static_cast<size_t>(j - 1)];
+    if (!slot) slot = solve_four_bar(j);
+    return *slot;
   }
 
   /// Sides and rates by the paper's 1-based indices.
@@ -66,71 +111,55 @@ struct PolygonContext {
   int inputs() const { return n - 3; }
 
  private:
-  mutable std::map<int, std::vector<FourBarConstruction<T>>> other_readings_;
-};
+  /// f() unless at the dead centre, as a Defined (an UndefinedQuantity becomes undefined).
+  template <class V, class F>
+  Defined<V> attempt_unless_dead_centre(const F& f) const {
+    return Defined<V>::attempt([&]() -> V {
+      if (dead_centre_) throw dead_centre_error();
+      return f();
+    });
+  }
+  template <class V, class F>
+  const Defined<V>& cached(std::optional<Defined<V>>& slot, const F& f) const {
+    if (!slot) slot = attempt_unless_dead_centre<V>(f);
+    return *slot;
+  }
 
-/// The polygon K'_j, K_{n-2}, K_{n-1}, K_n of four-bar j.
-template <class T>
-Polygon<T> make_four_bar_polygon(const Polygon<T>& p, int j) {
-  const int n = p.n();
-  return Polygon<T>({p.joint(n - 2) - p.side(j), p.joint(n - 2), p.joint(n - 1), p.joint(n)});
-}
-
-/// Builds the context from a polygon and rates already in scalar type T. `dead_centre` says
-/// whether D = 0, decided by the caller (exactly, from the exact input or identically for
-/// symbolic coordinates): a rounded D must not turn "does not exist" into a huge number.
-template <class T>
-PolygonContext<T> build_polygon_context_from(GroundTruthEngine& engine, Polygon<T> polygon, InputRates<T> rates,
-                                             bool dead_centre) {
-  PolygonContext<T> c;
-  c.n = polygon.n();
-  c.polygon = std::move(polygon);
-  c.rates = std::move(rates);
   // Four-bar j shares r_{n-2} and r_{n-1}, hence D, so it is at its dead centre too.
-  const auto unless_dead_centre = [dead_centre](auto&& f) {
-    if (dead_centre) throw dead_centre_error();
-    return f();
-  };
-  c.truth = Defined<PolygonMotion<T>>::attempt(
-      [&] { return unless_dead_centre([&] { return engine.motion(c.polygon, c.rates); }); });
-  c.closed = Defined<ClosedForms<T>>::attempt(
-      [&] { return unless_dead_centre([&] { return compute_closed_forms(c.polygon); }); });
-  c.coefficients = Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::attempt(
-      [&] { return unless_dead_centre([&] { return engine.coefficients(c.polygon); }); });
-  const T zero = from_int<T>(0), one = from_int<T>(1);
-  c.velocity_coefficients = Defined<std::pair<std::vector<T>, std::vector<T>>>::attempt([&] {
-    return unless_dead_centre([&] {
-      std::pair<std::vector<T>, std::vector<T>> v;
-      for (int j = 1; j <= c.n - 3; ++j) {
-        InputRates<T> unit{std::vector<T>(static_cast<size_t>(c.n - 3), zero), std::vector<T>(static_cast<size_t>(c.n - 3), zero)};
-        unit.omega[static_cast<size_t>(j - 1)] = one;
-        const PolygonMotion<T> m = engine.motion(c.polygon, unit);
-        v.first.push_back(m.omega[static_cast<size_t>(c.n - 2)]);
-        v.second.push_back(m.omega[static_cast<size_t>(c.n - 3)]);
-      }
-      return v;
-    });
-  });
-  for (int j = 1; j <= c.n - 3; ++j) {
-    c.construction.push_back(construct_four_bar(c.polygon, j));
-    const Polygon<T> fb = make_four_bar_polygon(c.polygon, j);
+  FourBarTruth<T> solve_four_bar(int j) const {
+    const T zero = from_int<T>(0), one = from_int<T>(1);
+    const Polygon<T> fb = make_four_bar_polygon(polygon, j);
     FourBarTruth<T> t;
-    const auto unit = Defined<PolygonMotion<T>>::attempt(
-        [&] { return unless_dead_centre([&] { return engine.motion(fb, InputRates<T>{{one}, {zero}}); }); });
-    const auto real = Defined<PolygonMotion<T>>::attempt([&] {
-      return unless_dead_centre([&] { return engine.motion(fb, InputRates<T>{{c.omega_in(j)}, {c.omega_dot_in(j)}}); });
-    });
+    const auto unit = attempt_unless_dead_centre<PolygonMotion<T>>(
+        [&] { return engine_->motion(fb, InputRates<T>{{one}, {zero}}); });
+    const auto real = attempt_unless_dead_centre<PolygonMotion<T>>(
+        [&] { return engine_->motion(fb, InputRates<T>{{omega_in(j)}, {omega_dot_in(j)}}); });
     t.ratio_out = Defined<T>::attempt([&] { return unit.get().omega[2]; });
     t.ratio_cpl = Defined<T>::attempt([&] { return unit.get().omega[1]; });
     t.omega_out = Defined<T>::attempt([&] { return real.get().omega[2]; });
     t.omega_cpl = Defined<T>::attempt([&] { return real.get().omega[1]; });
     t.omega_dot_out = Defined<T>::attempt([&] { return real.get().omega_dot[2]; });
     t.omega_dot_cpl = Defined<T>::attempt([&] { return real.get().omega_dot[1]; });
-    t.coefficients = Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::attempt(
-        [&] { return unless_dead_centre([&] { return engine.coefficients(fb); }); });
-    c.four_bars.push_back(std::move(t));
+    t.coefficients = attempt_unless_dead_centre<std::pair<TermCoefficients<T>, TermCoefficients<T>>>(
+        [&] { return engine_->coefficients(fb); });
+    return t;
   }
-  return c;
+
+  GroundTruthEngine* engine_;
+  bool dead_centre_ = false;
+  mutable std::optional<Defined<PolygonMotion<T>>> truth_;
+  mutable std::optional<Defined<ClosedForms<T>>> closed_;
+  mutable std::optional<Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>> coefficients_;
+  mutable std::optional<Defined<std::pair<std::vector<T>, std::vector<T>>>> velocity_coefficients_;
+  mutable std::map<int, std::vector<FourBarConstruction<T>>> constructions_;
+  mutable std::vector<std::optional<FourBarTruth<T>>> four_bars_;
+};
+
+/// Builds the context from a polygon and rates already in scalar type T (see the constructor).
+template <class T>
+PolygonContext<T> build_polygon_context_from(GroundTruthEngine& engine, Polygon<T> polygon, InputRates<T> rates,
+                                             bool dead_centre) {
+  return PolygonContext<T>(engine, std::move(polygon), std::move(rates), dead_centre);
 }
 
 /// Builds the context in scalar type T from exact input (each exact number is converted once;
