@@ -107,6 +107,8 @@ std::vector<std::pair<ex, std::string>> construction_degeneracies(const PolygonC
     v.emplace_back(numerator_of(cross(kn1 - q, p - q)), "beta_" + s + " = 0 or pi: Q_" + s + ", K_{n-1}, P'_" + s + " collinear");
     v.emplace_back(numerator_of(norm2(kn1 - q)), "Q_" + s + " = K_{n-1}: the ray Q_" + s + "K_{n-1} is null");
     v.emplace_back(numerator_of(cross(kn1 - p, q - p)), "gamma_" + s + " = 0 or pi: P'_" + s + ", K_{n-1}, Q_" + s + " collinear");
+    v.emplace_back(numerator_of(norm2(kn1 - p)), "P'_" + s + " = K_{n-1}: the ray P'_" + s + "K_{n-1} is null");
+    v.emplace_back(numerator_of(norm2(p - q)), "P'_" + s + " = Q_" + s + ": a ray of beta_" + s + " and gamma_" + s + " is null");
   }
   return v;
 }
