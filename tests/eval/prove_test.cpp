@@ -30,6 +30,7 @@ TEST(Prove, Eq22IsProvedForEveryNExceptWhereNamedDegeneraciesVanish) {
   for (const auto& e : r.except) {
     dead_centre = dead_centre || e.meaning.find("dead centre") != std::string::npos;
     q_infinity = q_infinity || e.meaning.find("Q_1 at infinity") != std::string::npos;
+    EXPECT_EQ(e.meaning.find("unnamed"), std::string::npos) << e.polynomial;
   }
   EXPECT_TRUE(dead_centre);
   EXPECT_TRUE(q_infinity);
