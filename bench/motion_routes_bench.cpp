@@ -1,7 +1,8 @@
 // The routes to omega-dot_{n-1,n} in floating-point and exact arithmetic, timed on the same
 // random polygons:
 //   BM_Eq22Double           the paper's formula (22) on the generic construction (Q_j, P'_j,
-//                           beta_j per four-bar j), in plain double: the graphic method's cost;
+//                           beta_j per four-bar j: construct_four_bar_steps), in plain double:
+//                           the graphic method's cost;
 //   BM_Eq22ClosedFormsDouble  (22) with i, lambda from the closed forms: the formula alone;
 //   BM_ClosedFormMotion<T>  the ground truth by the closed forms of SPEC A2;
 //   BM_TapeMotion<T>        the ground truth by the compiled symbolic tape (route d).
@@ -30,22 +31,27 @@ struct PairSum {
 };
 
 /// Eq. (22): sum_j (lambda_j w_j^2 + i_{n-1,j} wd_j) - cot phi S1 - rho S2, with lambda_j and
-/// the ratios taken from the graphic construction of each four-bar j.
+/// the ratios taken from the graphic construction of each four-bar j (construct_four_bar_steps,
+/// as the construction route runs it), cot phi and rho = |r_{n-2}|^2/D from the signed angle.
 template <class T>
 T eq22_by_construction(const Polygon<T>& p, const InputRates<T>& in) {
-  const ClosedForms<T> cf = compute_closed_forms(p);
+  const int n = p.n();
+  const Vec2<T> a = p.side(n - 2), b = p.side(n - 1);
+  const T D = cross(a, b);
+  if (linkproof::is_zero(D)) throw dead_centre_error();
+  FourBarFrame<T> frame = make_four_bar_frame(p);
   T first{};
   PairSum<T> s1, s2;
-  for (int j = 1; j <= p.n() - 3; ++j) {
-    const FourBarConstruction<T> c = construct_four_bar(p, j);
+  for (int j = 1; j <= n - 3; ++j) {
+    FourBarSteps<T> c = construct_four_bar_steps(frame, p.joint(j), p.side(j));
+    if (!c.coefficients_defined) throw_first_undefined_coefficient(p, j);
     const T& w = in.omega[static_cast<size_t>(j - 1)];
     const T& wd = in.omega_dot[static_cast<size_t>(j - 1)];
-    const T& i_out = c.i_out.get();
-    first += c.lambda.get() * w * w + i_out * wd;
-    s1.add(i_out * w);
-    s2.add(c.i_cpl.get() * w);
+    first += c.lambda * w * w + c.i_out * wd;
+    s1.add(c.i_out * w);
+    s2.add(c.i_cpl * w);
   }
-  return first - cf.cot_phi * s1.value() - cf.rho * s2.value();
+  return first - dot(a, b) / D * s1.value() - norm2(a) / D * s2.value();
 }
 
 /// Eq. (22) with every coefficient from the closed forms (no construction).

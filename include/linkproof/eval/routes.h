@@ -86,22 +86,27 @@ class DijksmanAccumulator {
 
 /// Route (a): the paper's construction for every four-bar j. Throws UndefinedQuantity naming
 /// the first construction quantity that does not exist (or D at the dead centre).
+/// Per polygon, once: D, cot phi, the two rho, and the frame K_{n-2}, K_{n-1}, K_n shared by
+/// every four-bar; per j, the construction steps with plain values (construct_four_bar_steps:
+/// K'_j, Q_j, P'_j, the directed ratios, cot beta_j, cot gamma_j, lambda_j, mu_j). Only where a
+/// step is undefined is construct_four_bar built, to name the quantity.
 template <class T>
 RouteValue<T> compute_by_construction(const Polygon<T>& p, const InputRates<T>& in) {
   const int n = p.n();
   const Vec2<T> a = p.side(n - 2), b = p.side(n - 1);
   const T D = cross(a, b);
-  if (is_zero(D)) throw dead_centre_error();
+  if (linkproof::is_zero(D)) throw dead_centre_error();
+  // Not const: GCC 12 does not split a const aggregate that an inlined callee constructs into
+  // registers ("store to a read-only decl"), and the steps would go through memory.
+  FourBarFrame<T> frame = make_four_bar_frame(p);
+  const std::vector<Vec2<T>>& k = p.joints();  // K_j = k[j-1]; no wrap-around for j <= n-3
   DijksmanAccumulator<T> acc;
   for (int j = 1; j <= n - 3; ++j) {
-    const FourBarConstruction<T> c = construct_four_bar(p, j);
-    const auto k = static_cast<size_t>(j - 1);
-    // In this order, so that the quantity named when the construction breaks is deterministic.
-    const T& i_out = c.i_out.get();
-    const T& i_cpl = c.i_cpl.get();
-    const T& lambda = c.lambda.get();
-    const T& mu = c.mu.get();
-    acc.add(in.omega[k], in.omega_dot[k], i_out, i_cpl, lambda, mu);
+    const auto i = static_cast<size_t>(j - 1);
+    FourBarSteps<T> s = construct_four_bar_steps(frame, k[i], k[i + 1] - k[i]);  // r_j = K_{j+1} - K_j
+    // In the order i_{n-1,j}, i_{n-2,j}, lambda_j, mu_j, so that the name is deterministic.
+    if (!s.coefficients_defined) throw_first_undefined_coefficient(p, j);
+    acc.add(in.omega[i], in.omega_dot[i], s.i_out, s.i_cpl, s.lambda, s.mu);
   }
   return acc.finish(dot(a, b) / D, norm2(a) / D, norm2(b) / D);
 }

@@ -13,8 +13,16 @@
 //   lambda_j = i_{n-1,j} (1 - i_{n-1,j}) cot beta_j                  eq. (9a)
 //   gamma_j angle at P'_j in triangle Q_j P'_j K_{n-1}, > 0 iff Q_j -> P'_j -> K_{n-1} is ccw
 //   mu_j    = i_{n-2,j} (1 - i_{n-2,j}) cot gamma_j                  (companion formula)
-// Each quantity is Defined<>: where the construction breaks (Q_j or P'_j at infinity, a null
-// ray, beta_j = 0) it names the quantity and the reason (SPEC A6), and the rest goes on.
+//
+// The construction is written once, in construct_four_bar_steps: plain values and a status per
+// step (geometry/construction_steps.h), no exception, string or allocation, so that the
+// construction route (eval/routes.h) can run it for every j of a large polygon. The points and
+// lines shared by every four-bar j of a polygon (K_{n-2}, K_{n-1}, K_n) form a FourBarFrame,
+// built once per polygon.
+//
+// construct_four_bar names what the steps found: each quantity is Defined<>, and where the
+// construction breaks (Q_j or P'_j at infinity, a null ray, beta_j = 0) it names the quantity
+// and the reason (SPEC A6), and the rest goes on.
 //
 // ConstructionReading selects the erratum readings of SPEC A5 (the seed's printed forms and
 // tempting misreadings), so that each can be evaluated by the same code and shown to fail.
@@ -23,6 +31,7 @@
 #include <string>
 
 #include "linkproof/core/defined.h"
+#include "linkproof/geometry/construction_steps.h"
 #include "linkproof/geometry/polygon.h"
 
 namespace linkproof {
@@ -41,6 +50,119 @@ struct ConstructionReading {
   bool signed_ratios = true;
 };
 
+/// What every four-bar j of one polygon shares: the coupler and output joints, the ground
+/// pivot K_n, and the lines K_{n-2}K_{n-1} (on which Q_j lies) and K_{n-1}K_n (on which P'_j
+/// lies). Built once per polygon by make_four_bar_frame.
+template <class T>
+struct FourBarFrame {
+  Vec2<T> k_n2;         ///< K_{n-2}
+  Vec2<T> k_n1;         ///< K_{n-1}
+  Vec2<T> k_n;          ///< K_n
+  Vec2<T> coupler_dir;  ///< K_{n-1} - K_{n-2} (= r_{n-2}): direction of line K_{n-2}K_{n-1}
+  Vec2<T> output_dir;   ///< K_n - K_{n-1} (= r_{n-1}): direction of line K_{n-1}K_n
+  T one;                ///< 1 in T, for i (1 - i) in eq. (9a)
+};
+
+template <class T>
+FourBarFrame<T> make_four_bar_frame(const Polygon<T>& poly) {
+  const int n = poly.n();
+  const Vec2<T>& k_n2 = poly.joint(n - 2);
+  const Vec2<T>& k_n1 = poly.joint(n - 1);
+  const Vec2<T>& k_n = poly.joint(n);
+  return {k_n2, k_n1, k_n, k_n1 - k_n2, k_n - k_n1, from_int<T>(1)};
+}
+
+/// lambda_j = i_{n-1,j}(1 - i_{n-1,j}) cot beta_j (eq. 9a, after Freudenstein); with i_{n-2,j} and
+/// cot gamma_j it gives mu_j of the companion formula. `one` is 1 in T.
+template <class T>
+T freudenstein_coefficient(const T& i, const T& cot, const T& one) {
+  return i * (one - i) * cot;
+}
+
+/// Every point and number of the construction of one four-bar, as plain values, with the
+/// status of each step. A value is meaningful only where its status is `defined`; a step whose
+/// input is undefined is not run (status `not_reached`).
+template <class T>
+struct FourBarSteps {
+  Vec2<T> k_prime;  ///< K'_j (K_j in the undisplaced reading)
+  Vec2<T> q;        ///< Q_j
+  Vec2<T> p_prime;  ///< P'_j
+  T i_out{};        ///< i_{n-1,j}, eq. (4)
+  T i_cpl{};        ///< i_{n-2,j}, eq. (6)
+  T cot_beta{};     ///< cot beta_j, eq. (9a)
+  T cot_gamma{};    ///< cot gamma_j (companion)
+  T lambda{};       ///< lambda_j = i_{n-1,j}(1 - i_{n-1,j}) cot beta_j, eq. (9a)
+  T mu{};           ///< mu_j = i_{n-2,j}(1 - i_{n-2,j}) cot gamma_j
+  StepStatus q_status = StepStatus::not_reached;
+  StepStatus p_prime_status = StepStatus::not_reached;
+  StepStatus p_undisplaced_status = StepStatus::not_reached;  ///< P_j, reading A5.2 only
+  StepStatus i_out_status = StepStatus::not_reached;
+  StepStatus i_cpl_status = StepStatus::not_reached;
+  StepStatus beta_status = StepStatus::not_reached;
+  StepStatus gamma_status = StepStatus::not_reached;
+  /// i_{n-1,j}, i_{n-2,j}, lambda_j and mu_j all exist (then so do Q_j, P'_j, beta_j, gamma_j).
+  bool coefficients_defined = false;
+};
+
+/// The construction of the four-bar with input side r_j starting at K_j, in `f`'s polygon
+/// (SPEC A3), step by step: the one implementation of the construction. construct_four_bar
+/// names its undefined quantities; the construction route reads its coefficients directly.
+/// Of `reading`, only the misreadings that move a point are applied here (A5.1 K_j for K'_j,
+/// A5.2 beta_j towards P_j); ratios are directed and beta_j is ccw-positive, and lambda_j, mu_j
+/// are formed from those (construct_four_bar applies the A5.6 misreadings of the values).
+///
+/// Written for a loop over j in double (eval/routes.h): always inlined, the statuses kept in
+/// locals and stored once, so that the result lives in registers. (Through memory, GCC merges
+/// tests of adjacent one-byte statuses into one wide load, which stalls on the byte stores.)
+template <class T>
+[[gnu::always_inline]] inline FourBarSteps<T> construct_four_bar_steps(const FourBarFrame<T>& f, const Vec2<T>& k_j,
+                                                                       const Vec2<T>& r_j,
+                                                                       const ConstructionReading& reading = {}) {
+  constexpr StepStatus ok = StepStatus::defined, skipped = StepStatus::not_reached;
+  FourBarSteps<T> s;
+  // K'_j = K_{n-2} - r_j (SPEC A3; A5.1: the seed's printed K_j).
+  s.k_prime = reading.displaced_start ? f.k_n2 - r_j : k_j;
+  const Vec2<T>& kp = s.k_prime;
+
+  // Q_j = line(K_{n-2}, K_{n-1}) ^ line(K_n, K'_j); the ground line needs K'_j != K_n (SPEC A6).
+  const Vec2<T> ground_dir = kp - f.k_n;
+  const StepStatus q = is_zero_vector(ground_dir) ? StepStatus::pivots_coincide
+                                                  : intersect_lines(f.k_n2, f.coupler_dir, f.k_n, ground_dir, s.q);
+  // P'_j = line(K_{n-1}, K_n) ^ line(K'_j, K_{n-2}).
+  const StepStatus p = intersect_lines(f.k_n1, f.output_dir, kp, f.k_n2 - kp, s.p_prime);
+
+  // i_{n-1,j} = Q_jK'_j / Q_jK_n (eq. 4), i_{n-2,j} = K_{n-2}K'_j / K_{n-2}P'_j (eq. 6), directed.
+  const StepStatus i_out = q == ok ? directed_ratio(s.q, kp, f.k_n, s.i_out) : skipped;
+  const StepStatus i_cpl = p == ok ? directed_ratio(f.k_n2, kp, s.p_prime, s.i_cpl) : skipped;
+
+  // cot beta_j = (QK . QP) / (QK x QP), QK = K_{n-1} - Q_j, QP = P'_j - Q_j: beta_j > 0 iff
+  // P'_j -> Q_j -> K_{n-1} is ccw (eq. 9a). A5.2 measures towards P_j = line(K_{n-1}, K_n) ^
+  // line(K_j, K_{j+1}) instead (after P'_j, as the named construction reports P'_j first).
+  StepStatus p_undisplaced = skipped, beta = skipped;
+  if (p == ok) {
+    Vec2<T> towards = s.p_prime;
+    if (!reading.beta_towards_p_prime) p_undisplaced = intersect_lines(f.k_n1, f.output_dir, k_j, r_j, towards);
+    if ((reading.beta_towards_p_prime || p_undisplaced == ok) && q == ok)
+      beta = cot_signed_angle(f.k_n1 - s.q, towards - s.q, s.cot_beta);
+  }
+  // cot gamma_j = (P'K . P'Q) / (P'K x P'Q): gamma_j > 0 iff Q_j -> P'_j -> K_{n-1} is ccw.
+  const StepStatus gamma = p == ok && q == ok ? cot_signed_angle(f.k_n1 - s.p_prime, s.q - s.p_prime, s.cot_gamma) : skipped;
+
+  // lambda_j (eq. 9a) and mu_j (companion).
+  if (i_out == ok && beta == ok) s.lambda = freudenstein_coefficient(s.i_out, s.cot_beta, f.one);
+  if (i_cpl == ok && gamma == ok) s.mu = freudenstein_coefficient(s.i_cpl, s.cot_gamma, f.one);
+
+  s.q_status = q;
+  s.p_prime_status = p;
+  s.p_undisplaced_status = p_undisplaced;
+  s.i_out_status = i_out;
+  s.i_cpl_status = i_cpl;
+  s.beta_status = beta;
+  s.gamma_status = gamma;
+  s.coefficients_defined = i_out == ok && i_cpl == ok && beta == ok && gamma == ok;
+  return s;
+}
+
 template <class T>
 struct FourBarConstruction {
   int j = 0;                   ///< which input side (1..n-3)
@@ -55,119 +177,84 @@ struct FourBarConstruction {
   Defined<T> mu;               ///< mu_j = i_{n-2,j}(1 - i_{n-2,j}) cot gamma_j
 };
 
-/// Names of undefined quantities are built only when a quantity is undefined: on the regular
-/// path the construction makes no strings (they were ~45 % of its cost). The `_lazy` forms take
-/// callables returning the name and the description; the string forms call them.
-
-/// Intersection of line(p, p + u) and line(q, q + v). Throws UndefinedQuantity(name(), ...) if
-/// a direction is null or the lines are parallel (the point is at infinity).
-template <class T, class NameFn, class LinesFn>
-Vec2<T> construct_line_intersection_lazy(const Vec2<T>& p, const Vec2<T>& u, const Vec2<T>& q, const Vec2<T>& v,
-                                         const NameFn& name, const LinesFn& lines) {
-  if (is_zero_vector(u) || is_zero_vector(v))
-    throw UndefinedQuantity(name(), "a line through " + lines() + " has coincident points");
-  const T den = cross(u, v);
-  if (linkproof::is_zero(den)) throw UndefinedQuantity(name(), "lines " + lines() + " are parallel: the point is at infinity");
-  const T t = cross(q - p, v) / den;
-  return p + t * u;
-}
-
+/// Builds the construction for input side j (1 <= j <= n-3) of polygon `poly`, every quantity
+/// named where it does not exist. A quantity built from an undefined one carries that one's
+/// name (i_{n-1,j} without Q_j says "Q_j"); beta_j reports P'_j before Q_j.
 template <class T>
-Vec2<T> construct_line_intersection(const Vec2<T>& p, const Vec2<T>& u, const Vec2<T>& q,
-                                    const Vec2<T>& v, const std::string& name,
-                                    const std::string& lines) {
-  return construct_line_intersection_lazy(p, u, q, v, [&] { return name; }, [&] { return lines; });
-}
-
-/// Directed ratio XA / XB of segments on one line through X (A, B collinear with X):
-/// positive iff A and B lie on the same side of X. Undefined if B = X.
-template <class T, class NameFn>
-T compute_directed_ratio_lazy(const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>& b, const NameFn& name) {
-  const Vec2<T> xb = b - x;
-  const T den = norm2(xb);
-  if (linkproof::is_zero(den)) throw UndefinedQuantity(name(), "the reference segment has zero length");
-  return dot(a - x, xb) / den;
-}
-
-template <class T>
-T compute_directed_ratio(const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>& b, const std::string& name) {
-  return compute_directed_ratio_lazy(x, a, b, [&] { return name; });
-}
-
-/// cot of the signed angle at a vertex V between the rays VA and VB: (VA . VB) / (VA x VB).
-/// The angle is positive iff VA x VB > 0, i.e. iff the triangle B -> V -> A is counter-clockwise.
-template <class T, class NameFn, class RaysFn>
-T compute_cot_signed_angle_lazy(const Vec2<T>& va, const Vec2<T>& vb, const NameFn& name, const RaysFn& rays) {
-  if (is_zero_vector(va) || is_zero_vector(vb))
-    throw UndefinedQuantity(name(), "a ray of " + rays() + " is null (its end coincides with the vertex)");
-  const T s = cross(va, vb);
-  if (linkproof::is_zero(s)) throw UndefinedQuantity(name(), rays() + " are collinear: the angle is 0 or pi, its cotangent infinite");
-  return dot(va, vb) / s;
-}
-
-template <class T>
-T compute_cot_signed_angle(const Vec2<T>& va, const Vec2<T>& vb, const std::string& name,
-                           const std::string& rays) {
-  return compute_cot_signed_angle_lazy(va, vb, [&] { return name; }, [&] { return rays; });
-}
-
-/// Builds the construction for input side j (1 <= j <= n-3) of polygon `poly`.
-template <class T>
-FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j,
-                                          const ConstructionReading& reading = {}) {
-  const int n = poly.n();
+FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j, const ConstructionReading& reading = {}) {
+  const FourBarFrame<T> f = make_four_bar_frame(poly);
+  const FourBarSteps<T> s = construct_four_bar_steps(f, poly.joint(j), poly.side(j), reading);
   const auto sj = [j] { return std::to_string(j); };
-  const Vec2<T>& k_n2 = poly.joint(n - 2);
-  const Vec2<T>& k_n1 = poly.joint(n - 1);
-  const Vec2<T>& k_n = poly.joint(n);
-  const Vec2<T> r_j = poly.side(j);
+  const auto kp_name = [&] { return reading.displaced_start ? "K'_" + sj() : "K_" + sj(); };
+  // A5.6: unsigned segment ratios (abs_value throws for a symbolic value: that, too, is named).
+  const auto ratio = [&](const T& r) { return reading.signed_ratios ? r : abs_value(r); };
 
-  FourBarConstruction<T> c{j, reading.displaced_start ? k_n2 - r_j : poly.joint(j),
+  FourBarConstruction<T> c{j, s.k_prime,
                            Defined<Vec2<T>>::pending(), Defined<Vec2<T>>::pending(),
                            Defined<T>::pending(), Defined<T>::pending(),
                            Defined<T>::pending(), Defined<T>::pending(),
                            Defined<T>::pending(), Defined<T>::pending()};
-  const Vec2<T> kp = c.k_prime;
-  const auto kp_name = [&] { return reading.displaced_start ? "K'_" + sj() : "K_" + sj(); };
-
   c.q = Defined<Vec2<T>>::attempt([&] {
-    if (is_zero_vector(kp - k_n))
+    if (s.q_status == StepStatus::pivots_coincide)
       throw UndefinedQuantity("Q_" + sj(), kp_name() + " coincides with K_n: the ground line K_n" + kp_name() + " is undefined");
-    return construct_line_intersection_lazy(k_n2, k_n1 - k_n2, k_n, kp - k_n, [&] { return "Q_" + sj(); },
-                                            [&] { return "K_{n-2}K_{n-1} and K_n" + kp_name(); });
+    require_intersection(s.q_status, [&] { return "Q_" + sj(); }, [&] { return "K_{n-2}K_{n-1} and K_n" + kp_name(); });
+    return s.q;
   });
   c.p_prime = Defined<Vec2<T>>::attempt([&] {
-    return construct_line_intersection_lazy(k_n1, k_n - k_n1, kp, k_n2 - kp, [&] { return "P'_" + sj(); },
-                                            [&] { return "K_{n-1}K_n and " + kp_name() + "K_{n-2}"; });
+    require_intersection(s.p_prime_status, [&] { return "P'_" + sj(); },
+                         [&] { return "K_{n-1}K_n and " + kp_name() + "K_{n-2}"; });
+    return s.p_prime;
   });
-  const auto ratio = [&](const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>& b, const auto& name) {
-    T r = compute_directed_ratio_lazy(x, a, b, name);
-    return reading.signed_ratios ? r : abs_value(r);
-  };
-  c.i_out = Defined<T>::attempt([&] { return ratio(c.q.get(), kp, k_n, [&] { return "i_{n-1," + sj() + "}"; }); });
-  c.i_cpl = Defined<T>::attempt([&] { return ratio(k_n2, kp, c.p_prime.get(), [&] { return "i_{n-2," + sj() + "}"; }); });
-
+  c.i_out = Defined<T>::attempt([&] {
+    (void)c.q.get();
+    require_ratio(s.i_out_status, [&] { return "i_{n-1," + sj() + "}"; });
+    return ratio(s.i_out);
+  });
+  c.i_cpl = Defined<T>::attempt([&] {
+    (void)c.p_prime.get();
+    require_ratio(s.i_cpl_status, [&] { return "i_{n-2," + sj() + "}"; });
+    return ratio(s.i_cpl);
+  });
   c.cot_beta = Defined<T>::attempt([&] {
-    Vec2<T> p = c.p_prime.get();
+    (void)c.p_prime.get();
     if (!reading.beta_towards_p_prime)
-      p = construct_line_intersection_lazy(k_n1, k_n - k_n1, poly.joint(j), r_j, [&] { return "P_" + sj(); },
-                                           [&] { return "K_{n-1}K_n and K_" + sj() + "K_" + std::to_string(j + 1); });
-    const Vec2<T> q = c.q.get();
-    // beta_j > 0 iff P -> Q -> K_{n-1} is ccw, i.e. iff QK x QP > 0.
-    T cot = compute_cot_signed_angle_lazy(k_n1 - q, p - q, [&] { return "beta_" + sj(); },
-                                          [&] { return "rays Q_" + sj() + "K_{n-1} and Q_" + sj() + "P'_" + sj(); });
-    return reading.beta_ccw_positive ? cot : -cot;
+      require_intersection(s.p_undisplaced_status, [&] { return "P_" + sj(); },
+                           [&] { return "K_{n-1}K_n and K_" + sj() + "K_" + std::to_string(j + 1); });
+    (void)c.q.get();
+    require_angle(s.beta_status, [&] { return "beta_" + sj(); },
+                  [&] { return "rays Q_" + sj() + "K_{n-1} and Q_" + sj() + "P'_" + sj(); });
+    return reading.beta_ccw_positive ? s.cot_beta : -s.cot_beta;  // A5.6: the reversed sign rule
   });
   c.cot_gamma = Defined<T>::attempt([&] {
-    const Vec2<T> p = c.p_prime.get();
-    // gamma_j > 0 iff Q -> P' -> K_{n-1} is ccw, i.e. iff P'K x P'Q > 0.
-    return compute_cot_signed_angle_lazy(k_n1 - p, c.q.get() - p, [&] { return "gamma_" + sj(); },
-                                         [&] { return "rays P'_" + sj() + "K_{n-1} and P'_" + sj() + "Q_" + sj(); });
+    (void)c.p_prime.get();
+    (void)c.q.get();
+    require_angle(s.gamma_status, [&] { return "gamma_" + sj(); },
+                  [&] { return "rays P'_" + sj() + "K_{n-1} and P'_" + sj() + "Q_" + sj(); });
+    return s.cot_gamma;
   });
-  const T one = from_int<T>(1);
-  c.lambda = Defined<T>::attempt([&] { const T& i = c.i_out.get(); return i * (one - i) * c.cot_beta.get(); });
-  c.mu = Defined<T>::attempt([&] { const T& i = c.i_cpl.get(); return i * (one - i) * c.cot_gamma.get(); });
+  // From the values as read (equal to s.lambda, s.mu in the correct reading).
+  c.lambda = Defined<T>::attempt([&] {
+    const T& i = c.i_out.get();  // named before beta_j
+    return freudenstein_coefficient(i, c.cot_beta.get(), f.one);
+  });
+  c.mu = Defined<T>::attempt([&] {
+    const T& i = c.i_cpl.get();  // named before gamma_j
+    return freudenstein_coefficient(i, c.cot_gamma.get(), f.one);
+  });
   return c;
+}
+
+/// Throws the UndefinedQuantity that reading i_{n-1,j}, i_{n-2,j}, lambda_j, mu_j (in this
+/// order) of construct_four_bar(poly, j) throws first. For a caller whose construct_four_bar_steps
+/// found !coefficients_defined: the names are made only here, on the rare undefined path.
+template <class T>
+[[noreturn]] void throw_first_undefined_coefficient(const Polygon<T>& poly, int j) {
+  const FourBarConstruction<T> c = construct_four_bar(poly, j);
+  (void)c.i_out.get();
+  (void)c.i_cpl.get();
+  (void)c.lambda.get();
+  (void)c.mu.get();
+  throw InternalError("construction of four-bar " + std::to_string(j) + ": every coefficient is defined");
 }
 
 }  // namespace linkproof
