@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "linkproof/core/a_priori_bound.h"
@@ -75,9 +76,13 @@ template <class F>
 bool certified_bound(const Tracked<F>& x, double tolerance, double& value, double& bound) {
   if (!std::isfinite(x.v) || !std::isfinite(x.e)) return false;
   value = static_cast<double>(x.v);
-  // e plus the rounding of v to double, rounded up.
-  const F total = x.e + std::abs(static_cast<F>(value) - x.v);
-  bound = std::nextafter(static_cast<double>(total), HUGE_VAL);
+  if constexpr (std::is_same_v<F, double>) {
+    bound = x.e;  // v is already a double: nothing more to round
+  } else {
+    // e plus the rounding of v to double, rounded up.
+    const F total = x.e + std::abs(static_cast<F>(value) - x.v);
+    bound = std::nextafter(static_cast<double>(total), HUGE_VAL);
+  }
   return bound <= tolerance * std::abs(value) && std::isfinite(bound);
 }
 
@@ -114,49 +119,53 @@ bool accept(const Tracked<F>& n1, const Tracked<F>& n2, const AdaptiveOptions& o
          certified_bound(n2, o.relative_tolerance, r.omega_dot_n2, r.bound_n2);
 }
 
-/// Depths of the parts of compute_omega_dot_parts for n sides (data-independent; one O(n)
-/// integer pass per n, cached per thread).
-const OmegaDotParts<OperationDepth>& part_depths(int n) {
-  thread_local std::vector<std::optional<OmegaDotParts<OperationDepth>>> cache;
+/// The a priori bound factor 1.001 k u of each part of compute_omega_dot_parts for n sides
+/// (core/a_priori_bound.h), from the parts' depths k: data-independent, so one O(n) integer
+/// pass per n and arithmetic, cached per thread. Infinite where k u > 2^-20.
+template <class F>
+const OmegaDotParts<F>& part_bound_factors(int n) {
+  thread_local std::vector<std::optional<OmegaDotParts<F>>> cache;
   const auto i = static_cast<size_t>(n);
   if (cache.size() <= i) cache.resize(i + 1);
   if (!cache[i]) {
-    // Sides are differences of exact joints (depth 1); rates are exact inputs (depth 0).
-    cache[i] = compute_omega_dot_parts<OperationDepth>(
+    // Sides are once-rounded differences of exact joints (depth 1); rates are exact (depth 0).
+    const OmegaDotParts<OperationDepth> k = compute_omega_dot_parts<OperationDepth>(
         n, [](int) { return Vec2<OperationDepth>{{1}, {1}}; },
         [](int, OperationDepth& w, OperationDepth& wd) { w = wd = OperationDepth{0}; });
+    // The bound of a value with shadow 1 is its factor.
+    const auto f = [](OperationDepth d) { return a_priori_error_bound(ShadowedFloat<F>::rounded_once(F(1)), d.k); };
+    cache[i] = OmegaDotParts<F>{f(k.d),    f(k.x0),     f(k.x1),     f(k.a_n1),
+                                f(k.a_n2), f(k.norm_a), f(k.norm_b), f(k.a_dot_b)};
   }
   return *cache[i];
 }
 
 /// Stage 1: the parts of the division-free fraction in ShadowedFloat<F> with a priori bounds,
 /// combined and divided in Tracked<F> (see eval/omega_dot_fraction.h for why the split).
+/// A non-finite shadow or factor gives a non-finite radius, which accept() rejects.
 template <class F>
 bool try_a_priori(const Polygon<double>& p, const InputRates<double>& in, const AdaptiveOptions& o, AdaptiveResult& r) {
   using S = ShadowedFloat<F>;
-  const auto exact = [](double x) { return S::exact(static_cast<F>(x)); };
-  // Sides enter as once-rounded differences (depth 1, as part_depths counts them).
-  const auto side = [&p](int j) {
-    const Vec2<double>& k0 = p.joint(j);
-    const Vec2<double>& k1 = p.joint(j + 1);
+  const std::vector<Vec2<double>>& k = p.joints();
+  // Sides enter as once-rounded differences (depth 1, as part_bound_factors counts them); j + 1
+  // <= n - 1 here, so no index wraps around.
+  const auto side = [&k](int j) {
+    const Vec2<double>& k0 = k[static_cast<size_t>(j - 1)];
+    const Vec2<double>& k1 = k[static_cast<size_t>(j)];
     return Vec2<S>{S::rounded_once(static_cast<F>(k1.x) - static_cast<F>(k0.x)),
                    S::rounded_once(static_cast<F>(k1.y) - static_cast<F>(k0.y))};
   };
+  const auto exact = [](double x) { return S::exact(static_cast<F>(x)); };
   const OmegaDotParts<S> s = compute_omega_dot_parts<S>(p.n(), side, rates_reader<S>(in, exact));
-  const OmegaDotParts<OperationDepth>& k = part_depths(p.n());
-  bool finite = true;
-  const auto bounded = [&finite](const S& x, OperationDepth depth) {
-    const F e = a_priori_error_bound(x, depth.k);
-    finite = finite && std::isfinite(e) && std::isfinite(x.v);
-    return Tracked<F>(x.v, e);
-  };
-  const OmegaDotParts<Tracked<F>> t{bounded(s.d, k.d),           bounded(s.x0, k.x0),
-                                    bounded(s.x1, k.x1),         bounded(s.a_n1, k.a_n1),
-                                    bounded(s.a_n2, k.a_n2),     bounded(s.norm_a, k.norm_a),
-                                    bounded(s.norm_b, k.norm_b), bounded(s.a_dot_b, k.a_dot_b)};
-  if (!finite) return false;
-  const OmegaDotFraction<Tracked<F>> f = combine_omega_dot_parts(t);
-  return accept(f.numerator_n1 / f.denominator, f.numerator_n2 / f.denominator, o, r);
+  const OmegaDotParts<F>& c = part_bound_factors<F>(p.n());
+  using T = Tracked<F>;
+  const OmegaDotParts<T> t{T(s.d.v, c.d * s.d.m),          T(s.x0.v, c.x0 * s.x0.m),
+                           T(s.x1.v, c.x1 * s.x1.m),       T(s.a_n1.v, c.a_n1 * s.a_n1.m),
+                           T(s.a_n2.v, c.a_n2 * s.a_n2.m), T(s.norm_a.v, c.norm_a * s.norm_a.m),
+                           T(s.norm_b.v, c.norm_b * s.norm_b.m), T(s.a_dot_b.v, c.a_dot_b * s.a_dot_b.m)};
+  const OmegaDotFraction<T> f = combine_omega_dot_parts(t);
+  const T inverse = T(1) / f.denominator;  // one bounded division for both accelerations
+  return accept(f.numerator_n1 * inverse, f.numerator_n2 * inverse, o, r);
 }
 
 /// Stages 2 and 3: the direct solve in Tracked<F> (running error bound).
