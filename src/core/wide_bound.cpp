@@ -21,7 +21,6 @@ namespace linkproof {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-double up(double x) { return std::nextafter(x, kInf); }
 double down(double x) { return std::nextafter(x, 0.0); }
 // Exponents of CLN floats this close to double's limits are handled by scaling first.
 constexpr std::int64_t kDoubleSafeExponent = 1000;
@@ -36,42 +35,12 @@ WideBound WideBound::infinity() { return WideBound(kInf, 0); }
 
 WideBound WideBound::power_of_two(std::int64_t k) { return normalized(0.5, k + 1); }
 
-bool WideBound::is_infinite() const { return std::isinf(m_); }
-
 WideBound WideBound::normalized(double m, std::int64_t k) {
   if (m == 0) return WideBound();
   int e = 0;
   const double f = std::frexp(m, &e);  // exact: m = f 2^e, f in [1/2, 1)
   // k + e cannot overflow: |k| <= 2^62 + a few thousand for every caller.
-  const std::int64_t kk = k + e;
-  if (kk > kMaxExponent) return infinity();
-  if (kk < kMinExponent) return WideBound(0.5, kMinExponent);  // rounded up to the least value
-  return WideBound(f, kk);
-}
-
-WideBound operator+(const WideBound& a, const WideBound& b) {
-  if (a.is_infinite() || b.is_infinite()) return WideBound::infinity();
-  if (a.is_zero()) return b;
-  if (b.is_zero()) return a;
-  const WideBound& hi = a.k_ >= b.k_ ? a : b;
-  const WideBound& lo = a.k_ >= b.k_ ? b : a;
-  const std::int64_t d = hi.k_ - lo.k_;
-  // lo < 2^-d hi-scale units; below 2^-60 it is less than one ulp (2^-53) of hi.m: one step up.
-  if (d > 60) return WideBound::normalized(up(hi.m_), hi.k_);
-  // ldexp is exact here (lo.m >= 1/2, d <= 60); the sum is rounded to nearest, then moved up.
-  return WideBound::normalized(up(hi.m_ + std::ldexp(lo.m_, static_cast<int>(-d))), hi.k_);
-}
-
-WideBound operator*(const WideBound& a, const WideBound& b) {
-  if (a.is_infinite() || b.is_infinite()) return WideBound::infinity();
-  if (a.is_zero() || b.is_zero()) return WideBound();
-  return WideBound::normalized(up(a.m_ * b.m_), a.k_ + b.k_);  // product in [1/4, 1): normal
-}
-
-WideBound operator/(const WideBound& a, const WideBound& b) {
-  if (a.is_infinite() || b.is_infinite() || b.is_zero()) return WideBound::infinity();
-  if (a.is_zero()) return WideBound();
-  return WideBound::normalized(up(a.m_ / b.m_), a.k_ - b.k_);  // quotient in (1/2, 2): normal
+  return clamped(f, k + e);
 }
 
 int compare(const WideBound& a, const WideBound& b) {

@@ -185,6 +185,28 @@ TYPED_TEST(TrackedTyped, PentagonValuesOfSpecA8AreEnclosedTightly) {
   check(c.construction[0].lambda.get(), q(-705, 2662), "lambda_1 (construction)");
 }
 
+// A divisor's margin |v| - e must never be overestimated (the quotient's radius divides by
+// it): both the fast path (e <= |v|/1024, no CLN operation) and the exact one in F.
+RC_GTEST_PROP(TrackedMp, MarginIsALowerBoundOfTheDistanceFromZero, ()) {
+  using F = MpFloat<30>;
+  const long k = *rc::gen::inRange<long>(-3000, 3000);
+  const Rational scale = k >= 0 ? Rational(cln::ash(cln::cl_I(1), k)) : 1 / Rational(cln::ash(cln::cl_I(1), -k));
+  const Rational q = Rational(*rc::gen::inRange<long>(-(1L << 50), 1L << 50)) / 3 * scale;
+  const F v(q);
+  const Rational abs_v = cln::abs(ScalarTraits<F>::to_rational(v));
+  // e = |v| times a random fraction in [2^-70, 1.5]
+  const Rational fraction = Rational(*rc::gen::inRange<long>(1, 3L << 40)) / Rational(cln::ash(cln::cl_I(1), *rc::gen::inRange(41, 111)));
+  const WideBound e = WideBound::from_rational_up(abs_v * fraction);
+  const WideBound m = TrackedTraits<F>::margin(v, e);
+  const Rational exact = abs_v - e.to_rational();
+  if (exact <= 0) {
+    RC_ASSERT(m.is_zero());
+  } else {
+    RC_ASSERT(m.to_rational() <= exact);
+    if (e.to_rational() <= abs_v / 2) RC_ASSERT(m.to_rational() >= exact * 255 / 256);
+  }
+}
+
 // CLN long floats have a 64-bit exponent: values far below double's range keep a tight
 // radius (the WideBound radius never underflows), and nothing is flushed to zero.
 TEST(TrackedMp, TinyAndHugeMagnitudesKeepTightBounds) {

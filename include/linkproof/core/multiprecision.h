@@ -131,10 +131,15 @@ struct TrackedTraits<MpFloat<Digits>> {
   }
   /// WideBound rounds every operation upward: nothing to add.
   static WideBound finish(const WideBound& r) { return r; }
-  /// |v| - e in F (e is exact in F, so one correctly rounded subtraction: relative error
-  /// <= 2^-p), then rounded down to a WideBound (>= 2^-54 relative below): a lower bound.
+  /// A lower bound on |v| - e. Usually e <= |v|/1024, and L (1 - 2^-9) rounded up is below
+  /// |v| - e for L <= |v| (WideBound's rounding adds < 2^-52 relative): no CLN operation.
+  /// Otherwise |v| - e in F (e is exact in F, so one correctly rounded subtraction, relative
+  /// error <= 2^-p), rounded down to a WideBound (>= 2^-54 relative below).
   static WideBound margin(const F& v, const WideBound& e) {
     if (e.is_infinite()) return WideBound();
+    const WideBound low = WideBound::from_float_down(v.value());
+    static const WideBound k1024(1024.0), shrink(1.0 - 1.0 / 512);
+    if (e * k1024 <= low) return low * shrink;
     const cln::cl_F d = cln::abs(v.value()) - e.to_float(F::format());
     if (!cln::plusp(d)) return WideBound();
     return WideBound::from_float_down(d);

@@ -8,9 +8,9 @@
 // midpoint's own format would make every Tracked operation ~6 times the cost of the plain one.
 // WideBound keeps the value m 2^k with m a double in [1/2, 1) (or 0, or +infinity) and k a
 // 64-bit integer: + * / are one double operation each, rounded to nearest by the hardware
-// (default rounding mode, SSE2) and then moved one ulp up with nextafter, so the result is
-// always >= the exact result of the same operation on the exact operands (upward rounding
-// without changing the FPU mode). Nothing underflows: the exponent is clamped to
+// (default rounding mode, SSE2) and then moved one ulp up (the next double, by its bit
+// pattern), so the result is always >= the exact result of the same operation on the exact
+// operands (upward rounding without changing the FPU mode). Nothing underflows: the exponent is clamped to
 // [-2^61, 2^61], a value below the range becomes 2^-2^61 (still an upper bound), one above it
 // becomes +infinity.
 //
@@ -22,7 +22,9 @@
 
 #include <cln/float.h>
 
+#include <bit>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "linkproof/core/exact.h"
@@ -50,7 +52,7 @@ class WideBound {
   static WideBound from_float_down(const cln::cl_F& x);
 
   bool is_zero() const { return m_ == 0; }
-  bool is_infinite() const;
+  bool is_infinite() const { return m_ == std::numeric_limits<double>::infinity(); }
   /// m in [1/2, 1) (0 for zero, +inf for infinity) and k with value m 2^k.
   double mantissa() const { return m_; }
   std::int64_t exponent() const { return k_; }
@@ -67,9 +69,10 @@ class WideBound {
   /// About 3 significant digits, for prose ("1.23e-1000"); not exact.
   std::string to_short_string() const;
 
+  /// a + b, a * b, a / b rounded up (inline: they are most of the cost of a Tracked operation).
   friend WideBound operator+(const WideBound& a, const WideBound& b);
   friend WideBound operator*(const WideBound& a, const WideBound& b);
-  /// a / b rounded up; infinite if b = 0 or either operand is infinite.
+  /// Infinite if b = 0 or either operand is infinite.
   friend WideBound operator/(const WideBound& a, const WideBound& b);
   WideBound& operator+=(const WideBound& b) { return *this = *this + b; }
 
@@ -84,8 +87,50 @@ class WideBound {
   WideBound(double m, std::int64_t k) : m_(m), k_(k) {}
   /// m 2^k for a finite m >= 0 that is exact: normalized, exponent clamped upward.
   static WideBound normalized(double m, std::int64_t k);
+  /// The same for m in (0, 4), the result of an operation on two mantissas (no frexp).
+  static WideBound normalized_near_one(double m, std::int64_t k) {
+    while (m >= 1) m *= 0.5, ++k;  // exact: scaling a normal double by 2
+    while (m < 0.5) m *= 2, --k;
+    return clamped(m, k);
+  }
+  static WideBound clamped(double m, std::int64_t k) {
+    if (k > kMaxExponent) return infinity();
+    if (k < kMinExponent) return WideBound(0.5, kMinExponent);  // rounded up to the least value
+    return WideBound(m, k);
+  }
+  /// The next double above x >= 0 (finite): one more in the bit pattern (0 -> least subnormal).
+  static double up(double x) { return std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) + 1); }
+  /// 2^-d exactly, 0 <= d <= 1000.
+  static double two_to_minus(std::int64_t d) {
+    return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - d) << 52);
+  }
   double m_ = 0;
   std::int64_t k_ = 0;
 };
+
+inline WideBound operator+(const WideBound& a, const WideBound& b) {
+  if (a.is_infinite() || b.is_infinite()) return WideBound::infinity();
+  if (a.is_zero()) return b;
+  if (b.is_zero()) return a;
+  const WideBound& hi = a.k_ >= b.k_ ? a : b;
+  const WideBound& lo = a.k_ >= b.k_ ? b : a;
+  const std::int64_t d = hi.k_ - lo.k_;
+  // lo < 2^-d in units of 2^hi.k; past d = 60 that is below one ulp (2^-53) of hi.m: one step up.
+  if (d > 60) return WideBound::normalized_near_one(WideBound::up(hi.m_), hi.k_);
+  // lo.m 2^-d is exact (lo.m >= 1/2, d <= 60); the sum is rounded to nearest, then moved up.
+  return WideBound::normalized_near_one(WideBound::up(hi.m_ + lo.m_ * WideBound::two_to_minus(d)), hi.k_);
+}
+
+inline WideBound operator*(const WideBound& a, const WideBound& b) {
+  if (a.is_infinite() || b.is_infinite()) return WideBound::infinity();
+  if (a.is_zero() || b.is_zero()) return WideBound();
+  return WideBound::normalized_near_one(WideBound::up(a.m_ * b.m_), a.k_ + b.k_);  // in [1/4, 1)
+}
+
+inline WideBound operator/(const WideBound& a, const WideBound& b) {
+  if (a.is_infinite() || b.is_infinite() || b.is_zero()) return WideBound::infinity();
+  if (a.is_zero()) return WideBound();
+  return WideBound::normalized_near_one(WideBound::up(a.m_ / b.m_), a.k_ - b.k_);  // in (1/2, 2)
+}
 
 }  // namespace linkproof
