@@ -39,7 +39,7 @@ ComparisonOutcome judge_exact(const Comparison<Rational>& c) {
 }
 
 // What the judge needs beyond TrackedTraits: exact comparisons of a radius with a midpoint,
-// the threshold sqrt(u) scale, and radii as text and as doubles rounded up. IEEE types keep
+// the threshold sqrt(u) scale, radii as text, relative bounds and conditions as doubles. IEEE types keep
 // their former plain-double formulas (the radius is an F); MpFloat compares exactly in F (a
 // WideBound is exact in any CLN format of >= 53 bits).
 template <class F>
@@ -54,7 +54,6 @@ struct JudgeOps {
   static bool radius_exceeds(const F& e, const F& t) { return e > t; }
   static F sqrt_u_times(const F& scale) { return std::sqrt(TrackedTraits<F>::unit_roundoff()) * scale; }
   static std::string radius_text(const F& e) { return format_float(e); }
-  static double to_double(const F& e) { return static_cast<double>(e); }
   static double relative(const F& e, const F& scale) {
     return scale > 0 ? static_cast<double>(e / scale) : (e == 0 ? 0.0 : HUGE_VAL);
   }
@@ -70,6 +69,7 @@ struct JudgeOps<MpFloat<D>> {
   using TT = TrackedTraits<F>;
   static bool any_non_finite(const F&, const F&, const F&) { return false; }  // CLN has no inf/NaN
   static F from_double(double x) { return F(exact_value_of(x)); }
+  /// Exact in F; never called on an unbounded radius (the judge tests that first).
   static cln::cl_F exact(const WideBound& e) { return e.to_float(F::format()); }
   static bool magnitude_exceeds(const F& x, const WideBound& e) { return cln::abs(x.value()) > exact(e); }
   static bool radius_exceeds(const WideBound& e, const F& t) { return exact(e) > t.value(); }
@@ -78,7 +78,6 @@ struct JudgeOps<MpFloat<D>> {
     return F(cln::scale_float(scale.value(), -static_cast<long>(F::precision_bits() / 2)));
   }
   static std::string radius_text(const WideBound& e) { return e.to_string(); }
-  static double to_double(const WideBound& e) { return e.to_double_up(); }
   static double relative(const WideBound& e, const F& scale) {
     if (cln::zerop(scale.value())) return e.is_zero() ? 0.0 : HUGE_VAL;
     return (e / WideBound::from_float_down(scale.value())).to_double_up();
