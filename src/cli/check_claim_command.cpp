@@ -1,4 +1,4 @@
-// linkproof check-claim FILE.yaml [--n A..B] [--count N] [--seed S] [--scene SCENE] [--json]
+// linkproof check-claim FILE.yaml [--n A..B] [--count N] [--seed S] [--scene SCENE [--arith A]] [--json]
 // linkproof check-claim --vocabulary
 //
 // A user's claims: proved for every n (symbolic, with the exceptional set), proved for the
@@ -27,6 +27,7 @@ struct CheckClaimArgs {
   int count = 20;
   std::uint64_t seed = 1;
   std::string scene;
+  std::string arith = "exact";
   double ladder_seconds = 1.0;
   bool json = false;
   bool vocabulary = false;
@@ -37,12 +38,16 @@ void print_vocabulary(std::ostream& out) {
     fmt::print(out, "{:24} {}\n", w.name + (w.arity == 0 ? "" : w.arity == 1 ? "[.]" : "(a, b)"), w.meaning);
 }
 
-/// No proof: the claim on `count` random exact polygons per n; a failure is a counterexample.
-void sample(GroundTruthEngine& engine, const DataClaim& c, int lo, int hi, const CheckClaimArgs& a, ProofResult& r) {
+/// No proof: the claim on `count` random exact polygons per n, judged in `arith`; a failure is a
+/// counterexample (in floating point too: `fails` means the exact sides differ, tracked.h).
+void sample(GroundTruthEngine& engine, const DataClaim& c, int lo, int hi, const CheckClaimArgs& a, Arithmetic arith,
+            ProofResult& r) {
+  const std::vector<Claim> claim{to_claim(c)};
   for (int n = std::max(lo, c.info.min_n); n <= hi && (c.info.max_n == 0 || n <= c.info.max_n); ++n)
     for (int i = 0; i < a.count; ++i) {
       const auto rc = generate_random_polygon(a.seed, n, i);
-      const ClaimOutcome o = check_data_claim(engine, c, rc.polygon, rc.rates);
+      const PolygonCheck check = check_polygon(engine, claim, "sample", rc.polygon, rc.rates, arith);
+      const ClaimOutcome& o = check.claims.front();
       ++r.samples;
       if (o.verdict == Verdict::Fails) {
         CounterexampleSearch s;
@@ -68,13 +73,16 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     return kAsExpected;
   }
   if (a.file.empty()) throw InputError("<command line>", "FILE", "a claim file is required (or --vocabulary)");
+  // Proofs, the counterexample search and its shrinking are exact whatever --arith says; it sets
+  // the arithmetic of the --scene check and of the random instances judged when no proof exists.
+  const Arithmetic arith = arithmetic_or_throw(a.arith);
   const ClaimFile file = load_claim_file(a.file);
   GroundTruthEngine engine;
   if (!a.scene.empty()) {  // every claim on one configuration, as `check` does
     const PolygonScene scene = load_polygon_scene(a.scene);
     std::vector<Claim> claims;
     for (const auto& c : file.claims) claims.push_back(to_claim(c));
-    const PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, Arithmetic::Exact);
+    const PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, arith);
     if (a.json)
       out << to_json(check).dump(2) << "\n";
     else
@@ -98,7 +106,7 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     if (r.verdict == ProofVerdict::Error) {
       const std::string why = r.error;
       r.error.clear();
-      sample(engine, c, lo, hi, a, r);
+      sample(engine, c, lo, hi, a, arith, r);
       if (r.verdict == ProofVerdict::HoldsOnSamples) r.error = "no proof: " + why;
     }
     results.push_back(std::move(r));
@@ -115,7 +123,11 @@ void add_check_claim_command(CLI::App& app, Action& action) {
   c->add_option("--n", a.n_range, "sides: N (prove for this n) or A..B (default: every n, searching 4..8)");
   c->add_option("--count", a.count, "random exact instances per n when no proof is found (default 20)");
   c->add_option("--seed", a.seed, "seed of the counterexample search and the samples (default 1)");
-  c->add_option("--scene", a.scene, "check the claims on this scene only (exact)");
+  c->add_option("--scene", a.scene, "check the claims on this scene only (in the arithmetic of --arith)");
+  c->add_option("--arith", a.arith,
+                "arithmetic of the --scene check and of the random instances judged when no proof is found: "
+                "exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help); proofs and "
+                "counterexample shrinking are exact");
   c->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs per claim (default 1)");
   c->add_flag("--vocabulary", a.vocabulary, "print the names a claim may use");
   c->add_flag("--json", a.json, "print JSON");

@@ -1,4 +1,4 @@
-// linkproof check SCENE [--arith exact|double|long-double] [--json] [--no-terms]
+// linkproof check SCENE [--arith exact|double|long-double|mp30|mp50|mp100|mp1000] [--json] [--no-terms]
 // SCENE is a polygon scene (io/scene.h) or a mechanism scene (io/mechanism_scene.h).
 #include "command.h"
 #include "dijksman1966.h"
@@ -53,7 +53,10 @@ void add_check_command(CLI::App& app, Action& action) {
   auto* c = app.add_subcommand("check", "check every claim on a scene (YAML)");
   auto& a = bind_action<CheckArgs>(c, action, run_check);
   c->add_option("scene", a.scene, "scene file, e.g. verify/scenes/pentagon.yaml")->required();
-  c->add_option("--arith", a.arith, "arithmetic: exact (default), double, long-double");
+  c->add_option("--arith", a.arith,
+                "arithmetic: exact (default: CLN rationals, a residual is 0 or not), or floating point with a "
+                "running error bound that draws the tolerance: double, long-double, mp30, mp50, mp100, mp1000 "
+                "(CLN long floats of 128, 192, 384, 3392 bits)");
   c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
   c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
 }

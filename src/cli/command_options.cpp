@@ -8,7 +8,7 @@ namespace linkproof::cli {
 
 Arithmetic arithmetic_or_throw(const std::string& s) {
   auto a = parse_arithmetic(s);
-  if (!a) throw InputError("<command line>", "--arith", "'" + s + "' is not one of exact, double, long-double");
+  if (!a) throw InputError("<command line>", "--arith", "'" + s + "' is not one of " + arithmetic_names());
   return *a;
 }
 

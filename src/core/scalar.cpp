@@ -59,17 +59,6 @@ Rational exact_value_of(F x) {
 template Rational exact_value_of<double>(double);
 template Rational exact_value_of<long double>(long double);
 
-template <std::floating_point F>
-Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {
-  const F v = round_rational<F>(q);
-  if (!std::isfinite(v)) return {v, std::numeric_limits<F>::infinity()};
-  const Rational err = cln::abs(q - exact_value_of(v));
-  // Round the radius up: its own conversion may lose half an ulp, so add one ulp of it.
-  F e = round_rational<F>(err);
-  e = std::nextafter(e, std::numeric_limits<F>::infinity());
-  if (cln::zerop(err)) e = 0;
-  return {v, e};
-}
 template struct ScalarTraits<Tracked<double>>;
 template struct ScalarTraits<Tracked<long double>>;
 

@@ -1,5 +1,7 @@
 #include "linkproof/eval/check.h"
 
+#include <cln/float.h>
+
 namespace linkproof {
 
 bool ClaimOutcome::is_as_expected() const {
@@ -45,6 +47,12 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
     out.headline.verdict = Verdict::Undefined;
     out.headline.undefined_quantity = u.quantity();
     out.headline.reason = u.reason();
+  } catch (const cln::floating_point_exception& e) {
+    // CLN long floats (mp arithmetics) have no denormals or infinity: underflow and overflow
+    // throw (core/multiprecision.h). The precision says nothing here, so neither may the verdict.
+    out.verdict = Verdict::Inconclusive;
+    out.headline.verdict = Verdict::Inconclusive;
+    out.headline.reason = std::string("CLN ") + e.what() + " (exponent range exceeded in this precision)";
   } catch (const std::exception& e) {
     out.verdict = Verdict::Error;
     out.error = e.what();
@@ -57,6 +65,10 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
 template ClaimOutcome run_claim<Rational>(const Claim&, const PolygonContext<Rational>&);
 template ClaimOutcome run_claim<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&);
 template ClaimOutcome run_claim<Tracked<long double>>(const Claim&, const PolygonContext<Tracked<long double>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<30>>>(const Claim&, const PolygonContext<Tracked<MpFloat<30>>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<50>>>(const Claim&, const PolygonContext<Tracked<MpFloat<50>>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<100>>>(const Claim&, const PolygonContext<Tracked<MpFloat<100>>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<1000>>>(const Claim&, const PolygonContext<Tracked<MpFloat<1000>>>&);
 
 PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
                            const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a) {

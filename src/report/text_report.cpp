@@ -9,7 +9,17 @@ namespace linkproof {
 
 namespace {
 
-std::string value_or_undefined(const std::optional<std::string>& v) { return v ? *v : "undefined"; }
+/// A floating-point decimal of the mp arithmetics can have ~1000 digits: tables show its first
+/// 22 characters, "...", and the exponent. Exact "p/q" (no '.') and the JSON are never cut.
+std::string readable(const std::string& s) {
+  if (s.find('.') == std::string::npos) return s;
+  const size_t e = s.find_first_of("eE");
+  const size_t mantissa = e == std::string::npos ? s.size() : e;
+  if (mantissa <= 26) return s;
+  return s.substr(0, 22) + "..." + s.substr(mantissa);
+}
+
+std::string value_or_undefined(const std::optional<std::string>& v) { return v ? readable(*v) : "undefined"; }
 
 std::string evidence(const ComparisonOutcome& c) {
   switch (c.verdict) {
@@ -17,8 +27,8 @@ std::string evidence(const ComparisonOutcome& c) {
     case Verdict::Error: return c.reason;
     default: break;
   }
-  std::string s = fmt::format("{} = {}  vs  {}", c.label.empty() ? "value" : c.label, c.lhs, c.rhs);
-  if (c.verdict == Verdict::Fails || !c.tolerance.empty()) s += "  residual " + c.residual;
+  std::string s = fmt::format("{} = {}  vs  {}", c.label.empty() ? "value" : c.label, readable(c.lhs), readable(c.rhs));
+  if (c.verdict == Verdict::Fails || !c.tolerance.empty()) s += "  residual " + readable(c.residual);
   if (!c.tolerance.empty()) s += "  tol " + c.tolerance;
   if (!c.reason.empty()) s += "  (" + c.reason + ")";
   if (!c.trust_route.empty()) s += "  trust: " + c.trust_route;
@@ -45,7 +55,7 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
   for (int j = 0; j < c.n; ++j)
     fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j]),
                value_or_undefined(c.omega_dot[j]));
-  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, c.determinant);
+  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, readable(c.determinant));
 
   fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
   int unexpected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
@@ -73,7 +83,7 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
           fmt::print(out, "  {:<22} {:<13} {} undefined: {}\n", t.label, to_string(t.verdict), t.undefined_quantity,
                      t.reason);
         else
-          fmt::print(out, "  {:<22} {:<13} {:<24} {}\n", t.label, to_string(t.verdict), t.lhs, t.rhs);
+          fmt::print(out, "  {:<22} {:<13} {:<24} {}\n", t.label, to_string(t.verdict), readable(t.lhs), readable(t.rhs));
       }
     }
   }

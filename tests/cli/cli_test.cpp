@@ -74,6 +74,70 @@ TEST(Cli, UnknownArithmeticIsBadInput) {
   EXPECT_NE(r.err.find("--arith"), std::string::npos);
 }
 
+TEST(Cli, EveryMultiprecisionArithmeticIsAcceptedAndNamedInTheJson) {
+  for (const std::string arith : {"mp30", "mp50", "mp100", "mp1000"}) {
+    const CliRun r = run_cli({"check", scene("pentagon.yaml"), "--arith", arith, "--json"});
+    ASSERT_EQ(r.code, 0) << arith << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["arithmetic"], arith);
+    EXPECT_EQ(j["summary"]["holds"], 18) << arith;  // as exact: 17 true claims + eq4.unsigned_ratio
+    EXPECT_EQ(j["summary"]["fails"], 12) << arith;
+    for (const auto& c : j["claims"]) {
+      ASSERT_TRUE(c.contains("tolerance") && c.contains("relative_error_bound") && c.contains("tolerance_derivation"))
+          << arith << " " << c["id"];
+    }
+  }
+  const auto j = nlohmann::json::parse(run_cli({"check", scene("pentagon.yaml"), "--arith", "mp100", "--json"}).out);
+  EXPECT_NE(j["tolerance_rule"].get<std::string>().find("u = 2^-384"), std::string::npos);
+  EXPECT_NE(j["claims"][0]["tolerance_derivation"].get<std::string>().find("u = 2^-384"), std::string::npos);
+  EXPECT_EQ(j["polygon"]["omega_dot"]["4"].get<std::string>().substr(0, 20), "2.821187077385424492");
+}
+
+TEST(Cli, SweepAndCheckClaimTakeTheMultiprecisionArithmetics) {
+  const CliRun sweep = run_cli({"sweep", "--n", "5..6", "--count", "2", "--seed", "3", "--arith", "mp50", "--json"});
+  ASSERT_EQ(sweep.code, 0) << sweep.err;
+  EXPECT_EQ(nlohmann::json::parse(sweep.out)["arithmetic"], "mp50");
+  const std::string catalogue = std::string(LINKPROOF_SOURCE_DIR) + "/verify/claims/dijksman1966.yaml";
+  const CliRun on_scene =
+      run_cli({"check-claim", catalogue, "--scene", scene("pentagon.yaml"), "--arith", "mp1000", "--json"});
+  ASSERT_EQ(on_scene.code, 0) << on_scene.err;
+  const auto j = nlohmann::json::parse(on_scene.out);
+  EXPECT_EQ(j["arithmetic"], "mp1000");
+  EXPECT_EQ(j["summary"]["unexpected_failures"], 0);
+  // Without --scene: the proof is symbolic whatever the arithmetic.
+  const std::string mine = write_temp("mine_eq5.yaml", R"yaml(claims:
+  - id: mine.eq5
+    source: "test"
+    statement: "eq. (5)"
+    n: "4"
+    lhs: omega_out
+    rhs: sum_j(i_out[j]*omega[j])
+)yaml");
+  const CliRun proved = run_cli({"check-claim", mine, "--n", "4", "--arith", "mp1000", "--json"});
+  ASSERT_EQ(proved.code, 0) << proved.err << proved.out;
+  EXPECT_EQ(nlohmann::json::parse(proved.out)["claims"][0]["verdict"], "proved_generically");
+}
+
+TEST(Cli, UnknownArithmeticIsRejectedByEveryCommandNamingTheOptionAndTheChoices) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"check", scene("pentagon.yaml"), "--arith", "mp31"},
+        std::vector<std::string>{"sweep", "--n", "5", "--count", "1", "--arith", "MP30"},
+        std::vector<std::string>{"check-claim", std::string(LINKPROOF_SOURCE_DIR) + "/verify/claims/dijksman1966.yaml",
+                                 "--scene", scene("pentagon.yaml"), "--arith", "mp"}}) {
+    const CliRun r = run_cli(args);
+    EXPECT_EQ(r.code, 2) << args[0];
+    EXPECT_NE(r.err.find("--arith"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("mp1000"), std::string::npos) << r.err;
+  }
+}
+
+TEST(Cli, CheckHelpListsTheArithmetics) {
+  const CliRun r = run_cli({"check", "--help"});
+  EXPECT_EQ(r.code, 0);
+  const std::string text = r.out + r.err;
+  for (const char* name : {"long-double", "mp30", "mp50", "mp100", "mp1000"}) EXPECT_NE(text.find(name), std::string::npos) << name;
+}
+
 TEST(Cli, MissingSceneFileIsBadInputNamingTheFile) {
   const CliRun r = run_cli({"check", "/nonexistent/scene.yaml"});
   EXPECT_EQ(r.code, 2);

@@ -1,19 +1,42 @@
-// Tracked<F>: the radius bounds the true error, checked against exact rationals.
+// Tracked<F>: the radius bounds the true error, checked against exact rationals, for every F
+// (IEEE double and long double, CLN long floats at 128 and 3392 bits) through one template.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <cln/integer.h>
+
+#include <random>
+
+#include "linkproof/claims/polygon_context.h"
+#include "linkproof/core/multiprecision.h"
 #include "linkproof/core/scalar.h"
-#include "linkproof/geometry/closed_forms.h"
 #include "linkproof/eval/random_polygon.h"
+#include "linkproof/geometry/closed_forms.h"
+#include "linkproof/io/scene.h"
 
 namespace linkproof {
 namespace {
 
-/// |exact - v| <= e, decided exactly.
+template <class F>
+Rational radius_value(const double& e) { return exact_value_of(e); }
+template <class F>
+Rational radius_value(const long double& e) { return exact_value_of(e); }
+template <class F>
+Rational radius_value(const WideBound& e) { return e.to_rational(); }
+
+/// |exact - v| <= e, decided exactly (an unbounded radius encloses everything).
 template <class F>
 bool encloses(const Tracked<F>& t, const Rational& exact) {
-  if (!std::isfinite(t.e)) return true;
-  return cln::abs(exact - exact_value_of(t.v)) <= exact_value_of(t.e);
+  if (TrackedTraits<F>::is_unbounded(t.e)) return true;
+  return cln::abs(exact - ScalarTraits<F>::to_rational(t.v)) <= radius_value<F>(t.e);
+}
+
+/// e <= 2^(slack - p) |exact|: the bound is tight, not merely true.
+template <class F>
+bool is_tight(const Tracked<F>& t, const Rational& exact, int slack_bits) {
+  if (TrackedTraits<F>::is_unbounded(t.e)) return false;
+  const int p = TrackedTraits<F>::precision_bits();
+  return radius_value<F>(t.e) <= cln::abs(exact) / cln::ash(cln::cl_I(1), p - slack_bits);
 }
 
 TEST(Tracked, ConversionRadiusIsTheExactRoundingError) {
@@ -41,6 +64,161 @@ RC_GTEST_PROP(Tracked, BoundEnclosesTheExactClosedFormMotion, ()) {
     RC_ASSERT(encloses(tracked.omega[j], exact.omega[j]));
     RC_ASSERT(encloses(tracked.omega_dot[j], exact.omega_dot[j]));
   }
+}
+
+// --- One typed test per arithmetic ------------------------------------------------------------
+
+template <class F>
+class TrackedTyped : public ::testing::Test {};
+using TrackedFloats = ::testing::Types<double, long double, MpFloat<30>, MpFloat<1000>>;
+TYPED_TEST_SUITE(TrackedTyped, TrackedFloats);
+
+TYPED_TEST(TrackedTyped, UnitRoundoffIsTwoToMinusPrecision) {
+  using TT = TrackedTraits<TypeParam>;
+  EXPECT_EQ(radius_value<TypeParam>(TT::unit_roundoff()), 1 / Rational(cln::ash(cln::cl_I(1), TT::precision_bits())));
+  if constexpr (!std::is_floating_point_v<TypeParam>) {
+    EXPECT_EQ(TT::precision_bits(), TypeParam::precision_bits());
+  }
+}
+
+TYPED_TEST(TrackedTyped, ExactInputsHaveZeroRadiusAndRoundedOnesTheirRoundingError) {
+  using T = Tracked<TypeParam>;
+  const T exact = ScalarTraits<T>::from_rational(Rational(-3) / 4);
+  EXPECT_TRUE(exact.e == typename T::Radius{});
+  EXPECT_TRUE(is_zero(ScalarTraits<T>::from_rational(0)));
+  const Rational third = Rational(1) / 3;
+  const T t = ScalarTraits<T>::from_rational(third);
+  EXPECT_TRUE(encloses(t, third));
+  EXPECT_TRUE(is_tight(t, third, 2));
+  EXPECT_FALSE(is_zero(t));
+}
+
+TYPED_TEST(TrackedTyped, DivisionByAnIntervalContainingZeroIsUnboundedNeverAnException) {
+  using T = Tracked<TypeParam>;
+  using TT = TrackedTraits<TypeParam>;
+  const T one = ScalarTraits<T>::from_rational(1);
+  const T tiny = ScalarTraits<T>::from_rational(Rational(1) / 3 / cln::ash(cln::cl_I(1), 200));
+  // tiny - tiny: midpoint exactly 0 with a positive radius. CLN would throw on x / 0.
+  const T zero_ish = tiny - tiny;
+  EXPECT_TRUE(TT::is_unbounded((one / zero_ish).e));
+  EXPECT_FALSE(TT::is_unbounded((one / tiny).e));
+  // Unbounded stays unbounded through further operations.
+  const T q = one / zero_ish;
+  EXPECT_TRUE(TT::is_unbounded((q * ScalarTraits<T>::from_rational(0)).e));
+  EXPECT_TRUE(TT::is_unbounded((q + one).e));
+}
+
+/// A random straight-line program of + - * / over random rationals, evaluated exactly and in
+/// Tracked<F>: every intermediate is enclosed. Operands span 2^-60..2^60, cancellations and
+/// divisions by small differences occur; the seed is in the failure message.
+template <class F>
+void check_random_program(std::uint64_t seed) {
+  using T = Tracked<F>;
+  std::mt19937_64 g(seed);
+  const auto rnd = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(g); };
+  std::vector<Rational> exact;
+  std::vector<T> tracked;
+  for (int i = 0; i < 5; ++i) {
+    const long k = rnd(-60, 60);
+    const Rational scale = k >= 0 ? Rational(cln::ash(cln::cl_I(1), k)) : 1 / Rational(cln::ash(cln::cl_I(1), -k));
+    const Rational q = Rational(rnd(-1000000, 1000000)) / Rational(rnd(1, 1000000)) * scale;
+    exact.push_back(q);
+    tracked.push_back(ScalarTraits<T>::from_rational(q));
+  }
+  for (int step = 0; step < 14; ++step) {
+    const size_t a = static_cast<size_t>(rnd(0, static_cast<long>(exact.size()) - 1));
+    size_t b = static_cast<size_t>(rnd(0, static_cast<long>(exact.size()) - 1));
+    switch (rnd(0, 4)) {
+      case 0: exact.push_back(exact[a] + exact[b]), tracked.push_back(tracked[a] + tracked[b]); break;
+      case 1: exact.push_back(exact[a] - exact[b]), tracked.push_back(tracked[a] - tracked[b]); break;
+      case 2: exact.push_back(exact[a] * exact[b]), tracked.push_back(tracked[a] * tracked[b]); break;
+      case 3:
+        if (cln::zerop(exact[b])) continue;
+        exact.push_back(exact[a] / exact[b]), tracked.push_back(tracked[a] / tracked[b]);
+        break;
+      default: {  // a - (a + small): cancellation, then divide by it
+        const Rational d = exact[a] - (exact[a] + exact[b] / 1000000);
+        if (cln::zerop(d)) continue;
+        const T td = tracked[a] - (tracked[a] + tracked[b] / ScalarTraits<T>::from_rational(1000000));
+        exact.push_back(exact[a] / d), tracked.push_back(tracked[a] / td);
+      }
+    }
+  }
+  for (size_t i = 0; i < exact.size(); ++i)
+    ASSERT_TRUE(encloses(tracked[i], exact[i])) << "seed " << seed << ", value " << i << ": exact " << format_rational(exact[i])
+                                                << ", midpoint " << to_text(tracked[i]);
+}
+
+TYPED_TEST(TrackedTyped, RadiusEnclosesTheExactValueOfRandomPrograms) {
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) check_random_program<TypeParam>(seed);
+}
+
+// SPEC A8 pentagon, read from the bundled scene: truth, closed forms and construction in
+// Tracked<F> enclose the exact values printed in the SPEC, with a tight radius.
+TYPED_TEST(TrackedTyped, PentagonValuesOfSpecA8AreEnclosedTightly) {
+  using T = Tracked<TypeParam>;
+  const PolygonScene s = load_polygon_scene(std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/pentagon.yaml");
+  GroundTruthEngine engine;
+  const PolygonContext<T> c = build_polygon_context<T>(engine, s.polygon, s.rates);
+  const auto q = [](long p, long d) { return Rational(p) / d; };
+  const auto check = [](const T& t, const Rational& exact, const char* what) {
+    EXPECT_TRUE(encloses(t, exact)) << what << ": " << to_text(t) << " vs " << format_rational(exact);
+    EXPECT_TRUE(is_tight(t, exact, 16)) << what;
+  };
+  const auto& m = c.truth.get();
+  check(m.omega[2], q(17, 11), "omega_3");
+  check(m.omega[3], q(3, 11), "omega_4");
+  check(m.omega_dot[2], q(7331, 2662), "omega_dot_3");
+  check(m.omega_dot[3], q(3755, 1331), "omega_dot_4");
+  const auto& cf = c.closed.get();
+  check(cf.D, -22, "D");
+  check(cf.cot_phi, q(-2, 11), "cot phi");
+  check(cf.rho, q(-10, 11), "|r_3|^2/D");
+  check(cf.i_out[0], q(6, 11), "i_41");
+  check(cf.i_cpl[0], q(13, 22), "i_31");
+  check(cf.lambda[0], q(-705, 2662), "lambda_1");
+  check(cf.i_out[1], q(9, 11), "i_42");
+  check(cf.i_cpl[1], q(-4, 11), "i_32");
+  check(cf.lambda[1], q(564, 1331), "lambda_2");
+  check(c.construction[0].cot_beta.get(), q(-47, 44), "cot beta_1 (construction)");
+  check(c.construction[1].cot_beta.get(), q(94, 33), "cot beta_2 (construction)");
+  check(c.construction[0].lambda.get(), q(-705, 2662), "lambda_1 (construction)");
+}
+
+// A divisor's margin |v| - e must never be overestimated (the quotient's radius divides by
+// it): both the fast path (e <= |v|/1024, no CLN operation) and the exact one in F.
+RC_GTEST_PROP(TrackedMp, MarginIsALowerBoundOfTheDistanceFromZero, ()) {
+  using F = MpFloat<30>;
+  const long k = *rc::gen::inRange<long>(-3000, 3000);
+  const Rational scale = k >= 0 ? Rational(cln::ash(cln::cl_I(1), k)) : 1 / Rational(cln::ash(cln::cl_I(1), -k));
+  const Rational q = Rational(*rc::gen::inRange<long>(-(1L << 50), 1L << 50)) / 3 * scale;
+  const F v(q);
+  const Rational abs_v = cln::abs(ScalarTraits<F>::to_rational(v));
+  // e = |v| times a random fraction in [2^-70, 1.5]
+  const Rational fraction = Rational(*rc::gen::inRange<long>(1, 3L << 40)) / Rational(cln::ash(cln::cl_I(1), *rc::gen::inRange(41, 111)));
+  const WideBound e = WideBound::from_rational_up(abs_v * fraction);
+  const WideBound m = TrackedTraits<F>::margin(v, e);
+  const Rational exact = abs_v - e.to_rational();
+  if (exact <= 0) {
+    RC_ASSERT(m.is_zero());
+  } else {
+    RC_ASSERT(m.to_rational() <= exact);
+    if (e.to_rational() <= abs_v / 2) RC_ASSERT(m.to_rational() >= exact * 255 / 256);
+  }
+}
+
+// CLN long floats have a 64-bit exponent: values far below double's range keep a tight
+// radius (the WideBound radius never underflows), and nothing is flushed to zero.
+TEST(TrackedMp, TinyAndHugeMagnitudesKeepTightBounds) {
+  using T = Tracked<MpFloat<30>>;
+  const Rational tiny = Rational(1) / 7 / cln::ash(cln::cl_I(1), 5000);
+  const Rational huge = Rational(5) / 3 * cln::ash(cln::cl_I(1), 5000);
+  const T a = ScalarTraits<T>::from_rational(tiny), b = ScalarTraits<T>::from_rational(huge);
+  const T c = (a * a) / (b + a) - a;
+  const Rational exact = (tiny * tiny) / (huge + tiny) - tiny;
+  EXPECT_TRUE(encloses(c, exact));
+  EXPECT_TRUE(is_tight(c, exact, 8));
+  EXPECT_FALSE(cln::cl_inhibit_floating_point_underflow);  // the radius relies on CLN throwing
 }
 
 }  // namespace

@@ -479,7 +479,7 @@ TEST(DegenerateGeometry, FloatingPointNeverFailsATrueClaimOnTheDegenerateScenes)
   for (const Family& f : regular_families()) {
     const PolygonScene s = load(f.file);
     SCOPED_TRACE(describe(s));
-    for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble}) {
+    for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble, Arithmetic::Mp30, Arithmetic::Mp1000}) {
       SCOPED_TRACE(std::string(to_string(a)));
       const PolygonCheck check = run(s, a);
       EXPECT_EQ(exit_status(check), 0);
@@ -501,7 +501,7 @@ TEST(DegenerateGeometry, DeadCentreIsUndefinedInFloatingPointToo) {
   const PolygonScene s = load("dead_centre");
   SCOPED_TRACE(describe(s));
   const int n = s.polygon.n();
-  for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble}) {
+  for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble, Arithmetic::Mp30, Arithmetic::Mp1000}) {
     SCOPED_TRACE(std::string(to_string(a)));
     const PolygonCheck check = run(s, a);
     ASSERT_TRUE(check.dead_centre);

@@ -8,6 +8,7 @@
 #include "linkproof/eval/check.h"
 #include "linkproof/eval/random_polygon.h"
 #include "linkproof/io/claim_file.h"
+#include "linkproof/io/scene.h"
 #include "support/polygons.h"
 
 namespace linkproof {
@@ -163,6 +164,40 @@ TEST(Dijksman1966MustFail, WrongTermIsNamedNotJustTheTotal) {
     }
   }
   EXPECT_EQ(pair_terms, 3);  // omega_1 omega_2, omega_1 omega_3, omega_2 omega_3
+}
+
+TEST(Dijksman1966MustFail, WrongFormulasAreRejectedInMp30) {
+  expect_wrong_variants_rejected<Tracked<MpFloat<30>>>("mp30");
+}
+
+// The bundled pentagon (SPEC A8) in CLN long floats with running error bounds: every verdict is
+// the exact one. All 17 true claims hold; every erratum reading fails except
+// eq4.unsigned_ratio, which coincides with the truth where all ratios are positive (as exactly).
+TEST(Dijksman1966Mp, PentagonVerdictsInMp30AndMp1000AreTheExactOnes) {
+  GroundTruthEngine engine;
+  const PolygonScene s = load_polygon_scene(std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/pentagon.yaml");
+  const auto exact = check_polygon(engine, dijksman1966::catalogue(), s.name, s.polygon, s.rates, Arithmetic::Exact);
+  for (const auto& [arith, bits] : {std::pair{Arithmetic::Mp30, "2^-128"}, std::pair{Arithmetic::Mp1000, "2^-3392"}}) {
+    SCOPED_TRACE(std::string(to_string(arith)));
+    const auto check = check_polygon(engine, dijksman1966::catalogue(), s.name, s.polygon, s.rates, arith);
+    ASSERT_EQ(check.claims.size(), exact.claims.size());
+    int true_claims_holding = 0, errata_failing = 0;
+    for (size_t k = 0; k < check.claims.size(); ++k) {
+      const ClaimOutcome& c = check.claims[k];
+      EXPECT_EQ(c.verdict, exact.claims[k].verdict) << c.info.id;
+      if (c.info.expected == Expectation::Holds) true_claims_holding += c.verdict == Verdict::Holds;
+      if (c.info.expected == Expectation::Fails) {
+        errata_failing += c.verdict == Verdict::Fails;
+        if (c.info.id != "dijksman1966.eq4.unsigned_ratio") {
+          EXPECT_EQ(c.verdict, Verdict::Fails) << c.info.id;
+        }
+      }
+      EXPECT_NE(c.headline.tolerance_derivation.find(std::string("u = ") + bits), std::string::npos) << c.info.id;
+    }
+    EXPECT_EQ(true_claims_holding, 17);
+    EXPECT_EQ(errata_failing, 12);
+    EXPECT_EQ(exit_status(check), 0);
+  }
 }
 
 TEST(Dijksman1966Double, TrueClaimsNeverFailAndMostHoldInDouble) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "linkproof/claims/polygon_context.h"
+#include "linkproof/core/multiprecision.h"
 #include "linkproof/core/verdict.h"
 
 namespace linkproof {
@@ -52,15 +53,33 @@ Comparison<T> compare(std::string label, L&& lhs, R&& rhs) {
   return {std::move(label), Defined<T>::attempt(std::forward<L>(lhs)), Defined<T>::attempt(std::forward<R>(rhs))};
 }
 
-/// The arithmetics a claim can be evaluated in: exact rationals, and IEEE double and long
-/// double with running error bounds. Adding a type here is the only change a new arithmetic
-/// needs in the claims layer.
+/// The arithmetics a claim can be evaluated in: exact rationals, and IEEE double, long double
+/// and CLN long floats at 128, 192, 384 and 3392 bits (mp30 ... mp1000), each with running
+/// error bounds (core/tracked.h). Adding a type here (and to eval/arithmetic.h) is the only
+/// change a new arithmetic needs in the claims layer; a claim is instantiated once per type.
+using ClaimScalarTypes = std::tuple<Rational, Tracked<double>, Tracked<long double>, Tracked<MpFloat<30>>, Tracked<MpFloat<50>>,
+                                    Tracked<MpFloat<100>>, Tracked<MpFloat<1000>>>;
+
 template <class T>
 using ClaimFunction = std::function<ClaimSides<T>(const PolygonContext<T>&)>;
 
+namespace claim_detail {
+template <class Tuple>
+struct FunctionsOf;
+template <class... T>
+struct FunctionsOf<std::tuple<T...>> {
+  using type = std::tuple<ClaimFunction<T>...>;
+  template <class G>
+  static type make(const G& generic) {
+    return type{ClaimFunction<T>(generic)...};
+  }
+};
+}  // namespace claim_detail
+
 struct Claim {
+  using Functions = claim_detail::FunctionsOf<ClaimScalarTypes>;
   ClaimInfo info;
-  std::tuple<ClaimFunction<Rational>, ClaimFunction<Tracked<double>>, ClaimFunction<Tracked<long double>>> functions;
+  Functions::type functions;
 
   template <class T>
   const ClaimFunction<T>& function() const { return std::get<ClaimFunction<T>>(functions); }
@@ -68,8 +87,7 @@ struct Claim {
   /// `generic` is a generic callable: [](const auto& context) { ... return ClaimSides<T>; }.
   template <class F>
   static Claim make(ClaimInfo info, F generic) {
-    return Claim{std::move(info), {ClaimFunction<Rational>(generic), ClaimFunction<Tracked<double>>(generic),
-                                   ClaimFunction<Tracked<long double>>(generic)}};
+    return Claim{std::move(info), Functions::make(generic)};
   }
 };
 

@@ -104,9 +104,9 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
   return s;
 }
 
-/// The data claim as a Claim for check_polygon and run_sweep.
-inline Claim to_claim(const DataClaim& claim) {
-  return Claim::make(claim.info, [claim](const auto& context) { return evaluate_data_claim(claim, context); });
-}
+/// The data claim as a Claim for check_polygon and run_sweep: evaluate_data_claim instantiated
+/// for every arithmetic of ClaimScalarTypes, once, in src/claims/data_claim.cpp (seven
+/// instantiations of the evaluator are the heaviest template code of the library).
+Claim to_claim(const DataClaim& claim);
 
 }  // namespace linkproof

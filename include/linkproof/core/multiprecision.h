@@ -16,6 +16,18 @@
 // never through double. There is no NaN or infinity: a division by an exact zero throws
 // cln's division_by_0_exception; generic code tests is_zero before dividing, as it must for
 // exact rationals anyway. The ladder instantiates D = 30, 50, 100, 1000 (eval/ladder.h).
+//
+// Tracked<MpFloat<D>> (TrackedTraits below) gives MpFloat a running error bound, so claims can
+// be judged in it (--arith mp30 ... mp1000). Its radius is a WideBound (core/wide_bound.h):
+// p-bit precision is wasted on a radius, but it needs the wide exponent range.
+// Underflow: CLN has no denormals; by default (cln::cl_inhibit_floating_point_underflow ==
+// false, which neither linkproof nor GiNaC changes) a result below the least long float throws
+// floating_point_underflow_exception instead of being flushed to 0. So every operation that
+// returns is correctly rounded with relative error <= u = 2^-p and needs no absolute term; the
+// exception (like overflow's) reaches the claim runner, which makes the verdict
+// `inconclusive`. Should someone inhibit the exception, CLN flushes to 0 and the underflow
+// term becomes least_positive_float, as denorm_min is for IEEE. (Long floats have a 64-bit
+// exponent: 2^-(2^63) is far beyond anything a scene can produce.)
 #pragma once
 
 #include <cln/float.h>
@@ -27,6 +39,7 @@
 #include <string_view>
 
 #include "linkproof/core/scalar.h"
+#include "linkproof/core/wide_bound.h"
 
 namespace linkproof {
 
@@ -47,6 +60,8 @@ class MpFloat {
   }
 
   MpFloat() : x_(cln::cl_float(0, format())) {}
+  /// An integer, exact (|k| < 2^p).
+  explicit MpFloat(int k) : x_(cln::cl_float(k, format())) {}
   /// Rounds the exact rational q to p bits.
   explicit MpFloat(const Rational& q) : x_(cln::cl_float(q, format())) {}
   /// Adopts a float; it is converted to this format if it has another one.
@@ -93,6 +108,46 @@ struct ScalarTraits<MpFloat<Digits>> {
   static std::string to_string(const MpFloat<Digits>& x) { return format_cln_float(x.value()); }
   /// The exact rational value of the float (every binary float is a dyadic rational).
   static Rational to_rational(const MpFloat<Digits>& x) { return cln::rational(x.value()); }
+};
+
+/// What Tracked needs of MpFloat<D> (core/tracked.h): radius in WideBound, rounded upward.
+template <int Digits>
+struct TrackedTraits<MpFloat<Digits>> {
+  using F = MpFloat<Digits>;
+  using Radius = WideBound;
+  static constexpr bool has_infinity = false;
+  static int precision_bits() { return F::precision_bits(); }
+  /// u = 2^-p exactly.
+  static WideBound unit_roundoff() {
+    static const WideBound u = WideBound::power_of_two(-precision_bits());
+    return u;
+  }
+  static F abs(const F& v) { return F(cln::abs(v.value())); }
+  static WideBound magnitude(const F& v) { return WideBound::from_float_up(v.value()); }
+  static WideBound underflow_term() {
+    if (!cln::cl_inhibit_floating_point_underflow) return WideBound();  // CLN throws instead
+    static const WideBound least = WideBound::from_float_up(cln::least_positive_float(F::format()));
+    return least;
+  }
+  /// WideBound rounds every operation upward: nothing to add.
+  static WideBound finish(const WideBound& r) { return r; }
+  /// A lower bound on |v| - e. Usually e <= |v|/1024, and L (1 - 2^-9) rounded up is below
+  /// |v| - e for L <= |v| (WideBound's rounding adds < 2^-52 relative): no CLN operation.
+  /// Otherwise |v| - e in F (e is exact in F, so one correctly rounded subtraction, relative
+  /// error <= 2^-p), rounded down to a WideBound (>= 2^-54 relative below).
+  static WideBound margin(const F& v, const WideBound& e) {
+    if (e.is_infinite()) return WideBound();
+    const WideBound low = WideBound::from_float_down(v.value());
+    static const WideBound k1024(1024.0), shrink(1.0 - 1.0 / 512);
+    if (e * k1024 <= low) return low * shrink;
+    const cln::cl_F d = cln::abs(v.value()) - e.to_float(F::format());
+    if (!cln::plusp(d)) return WideBound();
+    return WideBound::from_float_down(d);
+  }
+  static bool is_positive(const WideBound& r) { return !r.is_zero(); }
+  static WideBound unbounded() { return WideBound::infinity(); }
+  static bool is_unbounded(const WideBound& r) { return r.is_infinite(); }
+  static WideBound radius_up(const Rational& q) { return WideBound::from_rational_up(q); }
 };
 
 }  // namespace linkproof

@@ -5,8 +5,8 @@
 // Supported now:
 //   Rational          exact (CLN cl_RA): a residual is zero or it is not;
 //   double, long double  plain IEEE, for speed (no verdicts are drawn from these);
-//   Tracked<double>, Tracked<long double>  IEEE with a running error bound (see tracked.h),
-//                     used for floating-point verdicts;
+//   Tracked<double>, Tracked<long double>, Tracked<MpFloat<D>>  with a running error bound
+//                     (see tracked.h), used for floating-point verdicts;
 //   MpFloat<Digits>   CLN long floats at a fixed precision (multiprecision.h).
 // Besides conversion and printing, every trait has less(a, b) (an order, for pivoting; Tracked
 // compares midpoints) and to_rational(x) (the exact value of a float, for measuring errors).
@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <concepts>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -69,22 +70,41 @@ struct ScalarTraits<F> {
   static std::string to_string(F x) { return format_float(x); }
 };
 
-template <std::floating_point F>
+/// Any Tracked<F> whose F has ScalarTraits: values are those of the midpoint.
+template <class F>
 struct ScalarTraits<Tracked<F>> {
+  using Traits = TrackedTraits<F>;
   static constexpr bool is_exact = false;
   static constexpr bool has_error_bound = true;
   static constexpr std::string_view name = ScalarTraits<F>::name;
-  /// The midpoint is q rounded to F; the radius is the exact rounding error |q - v|.
+  /// The midpoint is q rounded to F; the radius is the exact rounding error |q - v|, rounded up.
   static Tracked<F> from_rational(const Rational& q);
   /// Only an exactly zero midpoint with zero radius counts as zero: a construction divides by
   /// anything else and lets the radius say how much the result can be trusted.
-  static bool is_zero(const Tracked<F>& x) { return x.v == 0 && x.e == 0; }
+  static bool is_zero(const Tracked<F>& x) { return ScalarTraits<F>::is_zero(x.v) && x.e == typename Traits::Radius{}; }
   static Tracked<F> abs(const Tracked<F>& x) { return linkproof::abs(x); }
-  static bool less(const Tracked<F>& a, const Tracked<F>& b) { return a.v < b.v; }
-  static Rational to_rational(const Tracked<F>& x) { return exact_value_of(x.v); }
-  static double to_double(const Tracked<F>& x) { return static_cast<double>(x.v); }
-  static std::string to_string(const Tracked<F>& x) { return format_float(x.v); }
+  static bool less(const Tracked<F>& a, const Tracked<F>& b) { return ScalarTraits<F>::less(a.v, b.v); }
+  static Rational to_rational(const Tracked<F>& x) { return ScalarTraits<F>::to_rational(x.v); }
+  static double to_double(const Tracked<F>& x) { return ScalarTraits<F>::to_double(x.v); }
+  static std::string to_string(const Tracked<F>& x) { return ScalarTraits<F>::to_string(x.v); }
 };
+
+template <std::floating_point F>
+F TrackedTraits<F>::radius_up(const Rational& q) {
+  if (cln::zerop(q)) return 0;
+  return std::nextafter(round_rational<F>(cln::abs(q)), std::numeric_limits<F>::infinity());
+}
+
+template <class F>
+Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {
+  F v = ScalarTraits<F>::from_rational(q);
+  if constexpr (Traits::has_infinity) {
+    if (!std::isfinite(v)) return {v, Traits::unbounded()};
+  }
+  const Rational err = cln::abs(q - ScalarTraits<F>::to_rational(v));
+  auto e = Traits::radius_up(err);
+  return {std::move(v), std::move(e)};
+}
 
 /// Shorthands used by generic code.
 template <class T>
