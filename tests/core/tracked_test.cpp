@@ -165,12 +165,12 @@ TYPED_TEST(TrackedTyped, PentagonValuesOfSpecA8AreEnclosedTightly) {
     EXPECT_TRUE(encloses(t, exact)) << what << ": " << to_text(t) << " vs " << format_rational(exact);
     EXPECT_TRUE(is_tight(t, exact, 16)) << what;
   };
-  const auto& m = c.truth.get();
+  const auto& m = c.truth().get();
   check(m.omega[2], q(17, 11), "omega_3");
   check(m.omega[3], q(3, 11), "omega_4");
   check(m.omega_dot[2], q(7331, 2662), "omega_dot_3");
   check(m.omega_dot[3], q(3755, 1331), "omega_dot_4");
-  const auto& cf = c.closed.get();
+  const auto& cf = c.closed().get();
   check(cf.D, -22, "D");
   check(cf.cot_phi, q(-2, 11), "cot phi");
   check(cf.rho, q(-10, 11), "|r_3|^2/D");
@@ -180,9 +180,9 @@ TYPED_TEST(TrackedTyped, PentagonValuesOfSpecA8AreEnclosedTightly) {
   check(cf.i_out[1], q(9, 11), "i_42");
   check(cf.i_cpl[1], q(-4, 11), "i_32");
   check(cf.lambda[1], q(564, 1331), "lambda_2");
-  check(c.construction[0].cot_beta.get(), q(-47, 44), "cot beta_1 (construction)");
-  check(c.construction[1].cot_beta.get(), q(94, 33), "cot beta_2 (construction)");
-  check(c.construction[0].lambda.get(), q(-705, 2662), "lambda_1 (construction)");
+  check(c.construction_for()[0].cot_beta.get(), q(-47, 44), "cot beta_1 (construction)");
+  check(c.construction_for()[1].cot_beta.get(), q(94, 33), "cot beta_2 (construction)");
+  check(c.construction_for()[0].lambda.get(), q(-705, 2662), "lambda_1 (construction)");
 }
 
 // A divisor's margin |v| - e must never be overestimated (the quotient's radius divides by
