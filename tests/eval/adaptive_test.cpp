@@ -1,6 +1,7 @@
 #include "linkproof/eval/adaptive.h"
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <cln/integer.h>
 
@@ -118,12 +119,53 @@ TEST(Adaptive, TheAPrioriDoubleStageCertifiesAtLeast98PercentOfRandomPentagonsAt
   EXPECT_GE(certified_by_first_stage(AdaptiveOptions{0x1p-40}, 20261121, 2000), 2000 * 98 / 100);
 }
 
+/// Random polygons scaled by 2^s (lengths) and rates by 2^t, s and t far beyond the bench
+/// families: products underflow or overflow in double, so the filter stages must refuse rather
+/// than certify a wrong value; omega-dot scales by 2^(2t) only, which the exact truth checks.
+RC_GTEST_PROP(Adaptive, NeverWrongOnRandomPolygonsAtExtremeScales, ()) {
+  const int n = *rc::gen::inRange(4, 8);
+  const int index = *rc::gen::inRange(0, 1000);
+  const int s = *rc::gen::inRange(-1000, 1000);
+  const int t = *rc::gen::inRange(-500, 500);
+  const bool correctly_rounded = *rc::gen::arbitrary<bool>();
+  const RandomPolygonCase c = generate_random_polygon(77, n, index);
+  std::vector<Vec2<double>> joints;
+  for (const auto& k : c.polygon.joints())
+    joints.push_back({std::ldexp(cln::double_approx(k.x), s), std::ldexp(cln::double_approx(k.y), s)});
+  InputRates<double> in;
+  for (const Rational& w : c.rates.omega) in.omega.push_back(std::ldexp(cln::double_approx(w), t));
+  for (const Rational& w : c.rates.omega_dot) in.omega_dot.push_back(std::ldexp(cln::double_approx(w), 2 * t));
+  const DoubleCase d{"", Polygon<double>(joints), in};
+  AdaptiveOptions o;
+  if (correctly_rounded) o.relative_tolerance = 0;
+  const AdaptiveResult r = compute_omega_dot_adaptive(d.polygon, d.rates, o);
+  const auto truth = exact_truth(d);  // joints that collapsed to equal doubles give D = 0
+  RC_ASSERT(r.defined == truth.has_value());
+  if (!truth) return;
+  RC_TAG(std::string(to_string(r.stage)));
+  for (auto [value, bound, exact] : {std::tuple{r.omega_dot_n1, r.bound_n1, truth->first},
+                                     std::tuple{r.omega_dot_n2, r.bound_n2, truth->second}}) {
+    if (!std::isfinite(value)) {
+      // Only the exact stage returns a non-finite value: the exact result is beyond double's range.
+      RC_ASSERT(r.stage == AdaptiveStage::Exact);
+      continue;
+    }
+    RC_ASSERT(cln::abs(exact - exact_value_of(value)) <= exact_value_of(bound));
+    if (correctly_rounded) RC_ASSERT(value == round_to_nearest_double(exact));
+  }
+}
+
 TEST(Adaptive, RoundToNearestDoubleDecidesExactly) {
   const Rational third = Rational(1) / 3;
   EXPECT_EQ(round_to_nearest_double(third), 1.0 / 3.0);
   // 1 + 2^-53 is a tie between 1 and 1 + 2^-52: ties to even gives 1.
   EXPECT_EQ(round_to_nearest_double(1 + Rational(1) / cln::ash(cln::cl_I(1), 53)), 1.0);
   EXPECT_EQ(round_to_nearest_double(1 + 3 * (Rational(1) / cln::ash(cln::cl_I(1), 54))), 1.0 + 0x1p-52);
+  // Below 2^-1022 (where CLN's double_approx gives 0): 3 * 2^-1075 ties between 2^-1074 and
+  // 2^-1073; even gives 2^-1073. A third of 2^-1060 is 2^14/3 steps of 2^-1074: rounds to 5461.
+  const Rational step = Rational(1) / cln::ash(cln::cl_I(1), 1074);
+  EXPECT_EQ(round_to_nearest_double(3 * step / 2), 0x1p-1073);
+  EXPECT_EQ(round_to_nearest_double(-step * 16384 / 3), -5461 * 0x1p-1074);
 }
 
 }  // namespace
