@@ -6,14 +6,43 @@
 #include <cln/rational.h>
 #include <cln/real.h>
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
 namespace linkproof {
 
+namespace {
+
+/// Below 2^-1022 doubles are evenly spaced by 2^-1074 (the subnormals, which cln::double_approx
+/// flushes to zero): there the nearest double is the step count rounded to nearest even.
+bool below_normal_range(const Rational& q) { return cln::abs(q) < Rational(1) / cln::ash(cln::cl_I(1), 1022); }
+double nearest_subnormal(const Rational& q) {
+  const cln::cl_I k = cln::round1(q * cln::ash(cln::cl_I(1), 1074));  // |k| <= 2^52: exact in double
+  return std::ldexp(static_cast<double>(cln::cl_I_to_long(k)), -1074);
+}
+
+}  // namespace
+
+/// Correctly rounded (to nearest, ties to even): cln::double_approx is only an approximation,
+/// so its neighbours are compared exactly.
 template <>
 double round_rational<double>(const Rational& q) {
-  return cln::double_approx(q);
+  if (below_normal_range(q)) return nearest_subnormal(q);
+  double best = cln::double_approx(q);
+  if (!std::isfinite(best)) return best;
+  Rational best_err = cln::abs(q - exact_value_of(best));
+  for (double c : {std::nextafter(best, -HUGE_VAL), std::nextafter(best, HUGE_VAL)}) {
+    if (!std::isfinite(c)) continue;
+    const Rational err = cln::abs(q - exact_value_of(c));
+    int exponent = 0;
+    const bool even = std::fmod(std::ldexp(std::frexp(c, &exponent), 53), 2.0) == 0;
+    if (err < best_err || (err == best_err && even)) {
+      best = c;
+      best_err = err;
+    }
+  }
+  return best;
 }
 
 template <>

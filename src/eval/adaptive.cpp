@@ -1,8 +1,5 @@
 #include "linkproof/eval/adaptive.h"
 
-#include <cln/integer.h>
-#include <cln/rational.h>
-
 #include <cmath>
 #include <limits>
 
@@ -35,44 +32,14 @@ std::string_view to_string(AdaptiveStage s) {
   return "exact";
 }
 
-namespace {
-
-/// 2^-1074, the spacing of doubles below 2^-1022 (the subnormal range, which cln::double_approx
-/// flushes to zero): q / 2^-1074 as an exact rational.
-Rational in_subnormal_steps(const Rational& q) { return q * cln::ash(cln::cl_I(1), 1074); }
-bool below_normal_range(const Rational& q) { return cln::abs(q) < Rational(1) / cln::ash(cln::cl_I(1), 1022); }
-double from_subnormal_steps(const cln::cl_I& k) {  // |k| <= 2^52: exact in double
-  return std::ldexp(static_cast<double>(cln::cl_I_to_long(k)), -1074);
-}
-
-}  // namespace
-
-double round_to_nearest_double(const Rational& q) {
-  // Below 2^-1022 doubles are evenly spaced by 2^-1074: round the step count to nearest even.
-  if (below_normal_range(q)) return from_subnormal_steps(cln::round1(in_subnormal_steps(q)));
-  double best = cln::double_approx(q);
-  if (!std::isfinite(best)) return best;
-  Rational best_err = cln::abs(q - exact_value_of(best));
-  for (double c : {std::nextafter(best, -HUGE_VAL), std::nextafter(best, HUGE_VAL)}) {
-    if (!std::isfinite(c)) continue;
-    const Rational err = cln::abs(q - exact_value_of(c));
-    int mant_exp = 0;
-    const bool even = std::fmod(std::ldexp(std::frexp(c, &mant_exp), 53), 2.0) == 0;
-    if (err < best_err || (err == best_err && even)) {
-      best = c;
-      best_err = err;
-    }
-  }
-  return best;
-}
+double round_to_nearest_double(const Rational& q) { return round_rational<double>(q); }
 
 namespace {
 
 /// Double upper bound of a nonnegative rational.
 double round_up(const Rational& q) {
-  if (below_normal_range(q)) return from_subnormal_steps(cln::ceiling1(in_subnormal_steps(q)));
-  double d = cln::double_approx(q);
-  if (exact_value_of(d) < q) d = std::nextafter(d, HUGE_VAL);
+  double d = round_rational<double>(q);
+  if (std::isfinite(d) && exact_value_of(d) < q) d = std::nextafter(d, HUGE_VAL);
   return d;
 }
 
