@@ -25,11 +25,7 @@ struct CheckArgs {
 int run_mechanism_check(const CheckArgs& a, Arithmetic arith, const std::string& text, std::ostream& out) {
   const MechanismScene scene = parse_mechanism_scene(text, a.scene);
   const MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), arith);
-  if (a.json)
-    out << to_json(check).dump(2) << "\n";
-  else
-    write_text(out, check);
-  return exit_status(check);
+  return print_report(out, check, a.json, exit_status(check));
 }
 
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {

@@ -31,6 +31,17 @@ Args& bind_action(CLI::App* sub, Action& action, Run run) {
   return *args;
 }
 
+/// Prints `report` as JSON (its to_json) or as text (its write_text) and returns `status`, the
+/// exit code: how every subcommand ends.
+template <class Report>
+int print_report(std::ostream& out, const Report& report, bool json, int status) {
+  if (json)
+    out << to_json(report).dump(2) << "\n";
+  else
+    write_text(out, report);
+  return status;
+}
+
 /// "--arith" parsed, or an InputError naming the option.
 Arithmetic arithmetic_or_throw(const std::string& s);
 

@@ -37,11 +37,7 @@ int run_count(const CountArgs& a, std::ostream& out, std::ostream&) {
     for (int n = lo; n <= hi; ++n)
       for (auto& c : dijksman1966::count_claims_for_n(n, a.seed)) r.claims.push_back(std::move(c));
   }
-  if (a.json)
-    out << to_json(r).dump(2) << "\n";
-  else
-    write_text(out, r);
-  return r.exit_status();
+  return print_report(out, r, a.json, r.exit_status());
 }
 
 }  // namespace

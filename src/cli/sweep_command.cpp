@@ -31,11 +31,7 @@ int run_sweep_command(const SweepArgs& a, std::ostream& out, std::ostream&) {
   o.only_index = a.index;
   GroundTruthEngine engine;
   const SweepReport r = run_sweep(engine, dijksman1966::catalogue(), o);
-  if (a.json)
-    out << to_json(r).dump(2) << "\n";
-  else
-    write_text(out, r);
-  return r.exit_status();
+  return print_report(out, r, a.json, r.exit_status());
 }
 
 }  // namespace

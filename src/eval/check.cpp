@@ -43,10 +43,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
       if (found) break;
     }
   } catch (const UndefinedQuantity& u) {
-    out.verdict = Verdict::Undefined;
-    out.headline.verdict = Verdict::Undefined;
-    out.headline.undefined_quantity = u.quantity();
-    out.headline.reason = u.reason();
+    out.mark_undefined(u);
   } catch (const cln::floating_point_exception& e) {
     // CLN long floats (mp arithmetics) have no denormals or infinity: underflow and overflow
     // throw (core/multiprecision.h). The precision says nothing here, so neither may the verdict.

@@ -96,10 +96,7 @@ ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismCon
       for (const auto& o : *list)
         if (o.verdict == v && out.headline.label.empty()) out.headline = o;
   } catch (const UndefinedQuantity& u) {
-    out.verdict = Verdict::Undefined;
-    out.headline.verdict = Verdict::Undefined;
-    out.headline.undefined_quantity = u.quantity();
-    out.headline.reason = u.reason();
+    out.mark_undefined(u);
   } catch (const std::exception& e) {
     out.verdict = Verdict::Error;
     out.error = e.what();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "linkproof/claims/claim.h"
+#include "linkproof/core/error.h"
 #include "linkproof/eval/arithmetic.h"
 #include "linkproof/eval/judge.h"
 
@@ -31,6 +32,13 @@ struct ClaimOutcome {
   /// True if this outcome is what the claim is expected to do, or says nothing against it
   /// (undefined/inconclusive). An erratum reading that happens to hold here is not a failure.
   bool is_as_expected() const;
+  /// Verdict Undefined, naming the quantity that does not exist and why.
+  void mark_undefined(const UndefinedQuantity& u) {
+    verdict = Verdict::Undefined;
+    headline.verdict = Verdict::Undefined;
+    headline.undefined_quantity = u.quantity();
+    headline.reason = u.reason();
+  }
   /// A true claim that fails: the verifier's "no".
   bool is_unexpected_failure() const { return info.expected == Expectation::Holds && verdict == Verdict::Fails; }
 };
