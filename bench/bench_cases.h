@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "linkproof/eval/random_polygon.h"
+#include "linkproof/check/random_polygon.h"
 
 namespace linkproof::bench {
 

@@ -7,7 +7,7 @@
 
 #include "bench_cases.h"
 #include "dijksman1966_counting.h"
-#include "linkproof/eval/counting.h"
+#include "linkproof/count/counting.h"
 
 namespace linkproof::bench {
 namespace {

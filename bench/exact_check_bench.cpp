@@ -6,7 +6,7 @@
 
 #include "bench_cases.h"
 #include "dijksman1966.h"
-#include "linkproof/eval/check.h"
+#include "linkproof/check/check.h"
 
 namespace linkproof::bench {
 namespace {

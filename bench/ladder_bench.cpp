@@ -1,16 +1,16 @@
-// The routes of eval/routes.h across the arithmetic ladder, and the adaptive mode, on the same
+// The routes of numerics/routes.h across the arithmetic ladder, and the adaptive mode, on the same
 // random polygons (bench_cases.h, seed printed in the context):
 //   BM_Route<T>/route/n   one evaluation of omega-dot_{n-1,n} and omega-dot_{n-2,n} by a route
 //                         (0 construction, 1 closed forms, 2 direct solve, 3 symbolic tape) in T;
-//   BM_Adaptive/n         the certified adaptive mode (eval/adaptive.h) on doubles;
+//   BM_Adaptive/n         the certified adaptive mode (numerics/adaptive.h) on doubles;
 // Counter per_side = time / (n-3 inputs). Cases on which the construction is undefined are left
 // out for every route, so that all routes time the same configurations.
 #include <benchmark/benchmark.h>
 
 #include "bench_cases.h"
-#include "linkproof/eval/adaptive.h"
-#include "linkproof/eval/ladder.h"
-#include "linkproof/eval/routes.h"
+#include "linkproof/numerics/adaptive.h"
+#include "linkproof/numerics/ladder.h"
+#include "linkproof/numerics/routes.h"
 
 namespace linkproof::bench {
 namespace {

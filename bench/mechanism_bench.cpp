@@ -5,10 +5,11 @@
 
 #include <random>
 
-#include "linkproof/eval/dijksman_compound.h"
-#include "linkproof/eval/mechanism_check.h"
-#include "linkproof/eval/mechanism_vector_route.h"
-#include "linkproof/symbolic/mechanism_closure.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "linkproof/mechanism/dijksman_compound.h"
+#include "linkproof/mechanism/mechanism_check.h"
+#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "linkproof/mechanism/mechanism_closure.h"
 
 namespace linkproof {
 namespace {

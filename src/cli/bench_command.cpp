@@ -1,5 +1,5 @@
 // linkproof bench [--families a,b,...] [--out DIR] [--json] [--full] [--cases N] [--n N] [--seed S]
-// The stability study (eval/bench_study.h): error against run time for every route x arithmetic,
+// The stability study (numerics/bench_study.h): error against run time for every route x arithmetic,
 // error against the parameter of each extreme family, adaptive-mode statistics. The default is
 // quick (a few seconds); --full runs the long lists (with a progress bar on stderr).
 #include <fmt/format.h>
@@ -10,7 +10,7 @@
 #include "cli.h"
 #include "command.h"
 #include "linkproof/core/error.h"
-#include "linkproof/eval/bench_study.h"
+#include "linkproof/numerics/bench_study.h"
 #include "linkproof/report/bench_report.h"
 
 namespace linkproof::cli {

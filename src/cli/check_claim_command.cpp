@@ -11,7 +11,7 @@
 #include "command.h"
 #include "linkproof/io/claim_file.h"
 #include "linkproof/claims/vocabulary.h"
-#include "linkproof/eval/random_polygon.h"
+#include "linkproof/check/random_polygon.h"
 #include "linkproof/io/scene.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/report/prove_report.h"

@@ -2,7 +2,7 @@
 // SCENE is a polygon scene (io/scene.h) or a mechanism scene (io/mechanism_scene.h).
 #include "command.h"
 #include "dijksman1966.h"
-#include "linkproof/eval/check.h"
+#include "linkproof/check/check.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/scene.h"
 #include "linkproof/report/mechanism_report.h"
@@ -30,9 +30,10 @@ int run_mechanism_check(const CheckArgs& a, Arithmetic arith, const std::string&
 
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   const Arithmetic arith = arithmetic_or_throw(a.arith);
-  if (const std::string text = read_scene_text(a.scene); is_mechanism_scene_text(text))
-    return run_mechanism_check(a, arith, text, out);
-  const PolygonScene scene = load_polygon_scene(a.scene);
+  // The file is read once (a pipe such as /dev/stdin can be read only once) and its text parsed.
+  const std::string text = read_scene_text(a.scene);
+  if (is_mechanism_scene_text(text)) return run_mechanism_check(a, arith, text, out);
+  const PolygonScene scene = parse_polygon_scene(text, a.scene);
   GroundTruthEngine engine;
   const PolygonCheck check =
       check_polygon(engine, dijksman1966::catalogue(), scene.name, scene.polygon, scene.rates, arith);

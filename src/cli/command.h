@@ -13,7 +13,7 @@
 #include <string>
 #include <utility>
 
-#include "linkproof/eval/arithmetic.h"
+#include "linkproof/check/arithmetic.h"
 
 namespace linkproof::cli {
 

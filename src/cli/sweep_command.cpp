@@ -3,7 +3,7 @@
 
 #include "command.h"
 #include "dijksman1966.h"
-#include "linkproof/eval/sweep.h"
+#include "linkproof/check/sweep.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/report/text_report.h"
 

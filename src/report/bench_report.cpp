@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "linkproof/core/error.h"
-#include "linkproof/report/svg_plot.h"
+#include "svg_plot.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/svg_plot.h"
+#include "svg_plot.h"
 
 #include <fmt/format.h>
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "dijksman1966.h"
-#include "linkproof/eval/check.h"
+#include "linkproof/check/check.h"
 #include "linkproof/io/claim_file.h"
 #include "support/polygons.h"
 

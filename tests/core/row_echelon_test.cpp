@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "linkproof/eval/random_polygon.h"
+#include "linkproof/check/random_polygon.h"
 
 namespace linkproof {
 namespace {

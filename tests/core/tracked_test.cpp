@@ -10,7 +10,7 @@
 #include "linkproof/claims/polygon_context.h"
 #include "linkproof/core/multiprecision.h"
 #include "linkproof/core/scalar.h"
-#include "linkproof/eval/random_polygon.h"
+#include "linkproof/check/random_polygon.h"
 #include "linkproof/geometry/closed_forms.h"
 #include "linkproof/io/scene.h"
 

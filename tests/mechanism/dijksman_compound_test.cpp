@@ -5,8 +5,9 @@
 
 #include <random>
 
-#include "linkproof/eval/dijksman_compound.h"
-#include "linkproof/eval/mechanism_vector_route.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "linkproof/mechanism/dijksman_compound.h"
+#include "linkproof/mechanism/mechanism_vector_route.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof {

@@ -8,7 +8,8 @@
 #include <sstream>
 
 #include "support/cli_run.h"
-#include "linkproof/eval/mechanism_check.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "linkproof/mechanism/mechanism_check.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof {

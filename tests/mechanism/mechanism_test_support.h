@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "linkproof/eval/mechanism_check.h"
+#include "linkproof/mechanism/mechanism_check.h"
 
 namespace linkproof::testing {
 

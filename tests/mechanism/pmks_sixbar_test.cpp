@@ -7,7 +7,8 @@
 
 #include <fstream>
 
-#include "linkproof/eval/mechanism_check.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "linkproof/mechanism/mechanism_check.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof {

@@ -2,7 +2,7 @@
 // and as a rational-function identity in generic symbols.
 #include <gtest/gtest.h>
 
-#include "linkproof/eval/random_polygon.h"
+#include "linkproof/check/random_polygon.h"
 #include "linkproof/geometry/closed_forms.h"
 #include "linkproof/symbolic/ground_truth.h"
 #include "support/polygons.h"

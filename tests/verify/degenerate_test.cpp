@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "dijksman1966.h"
-#include "linkproof/eval/check.h"
+#include "linkproof/check/check.h"
 #include "linkproof/geometry/closed_forms.h"
 #include "linkproof/geometry/construction.h"
 #include "linkproof/io/scene.h"

@@ -5,8 +5,8 @@
 #include <map>
 
 #include "dijksman1966.h"
-#include "linkproof/eval/check.h"
-#include "linkproof/eval/random_polygon.h"
+#include "linkproof/check/check.h"
+#include "linkproof/check/random_polygon.h"
 #include "linkproof/io/claim_file.h"
 #include "linkproof/io/scene.h"
 #include "support/polygons.h"

@@ -2,7 +2,7 @@
 // compared with the mechanism engine, and the rank count.
 #include <fmt/format.h>
 
-#include "linkproof/eval/dijksman_compound.h"
+#include "linkproof/mechanism/dijksman_compound.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::catalogues {

@@ -1,6 +1,6 @@
 // The counting claims of Dijksman (1966), sec. 3 and the end of sec. 2.1 (SPEC A7, A5.5), and
-// the eight-bar of Fig. 5 (SPEC A8). Every rank is computed exactly (eval/counting.h,
-// eval/compound_count.h); the paper's numbers are only what it is judged against.
+// the eight-bar of Fig. 5 (SPEC A8). Every rank is computed exactly (count/counting.h,
+// count/compound_count.h); the paper's numbers are only what it is judged against.
 //
 // Claim ids (N the number of bodies / sides):
 //   dijksman1966.A7.triangle_rank[n=N]       rank of rate_ij + rate_jk = rate_ik is (N-1)(N-2)/2
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "linkproof/eval/compound_count.h"
-#include "linkproof/eval/count_claim.h"
+#include "linkproof/count/compound_count.h"
+#include "linkproof/count/count_claim.h"
 
 namespace linkproof::dijksman1966 {
 

@@ -1,7 +1,7 @@
 // Seed 001 (SPEC.md B): the textbook acceleration polygon of a four-bar, and its errata.
 #include <fmt/format.h>
 
-#include "linkproof/eval/fourbar_polygon.h"
+#include "linkproof/mechanism/fourbar_polygon.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::catalogues {

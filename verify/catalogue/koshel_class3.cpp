@@ -3,7 +3,7 @@
 // paper switches to), frame "0"; joint "A" is the crank pin.
 #include <fmt/format.h>
 
-#include "linkproof/eval/mechanism_vector_route.h"
+#include "linkproof/mechanism/mechanism_vector_route.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::catalogues {

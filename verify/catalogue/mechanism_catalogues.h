@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "linkproof/eval/mechanism_check.h"
+#include "linkproof/mechanism/mechanism_check.h"
 
 namespace linkproof::catalogues {
 

@@ -2,7 +2,7 @@
 // evaluate its two sides on a polygon in any supported arithmetic.
 //
 // A claim's evaluation returns comparisons (lhs = rhs), never a verdict: the verdict is drawn by
-// the comparator (eval/judge.h), the same for every claim, so that a deliberately wrong formula
+// the comparator (check/judge.h), the same for every claim, so that a deliberately wrong formula
 // fed through it is rejected exactly like an erratum. A comparison is one of
 //   instances  the statement itself, once per index j where it is indexed (eq. 4: every j);
 //   terms      the coefficient of one monomial (omega-dot_j, omega_j^2, omega_j omega_l) of an
@@ -55,7 +55,7 @@ Comparison<T> compare(std::string label, L&& lhs, R&& rhs) {
 
 /// The arithmetics a claim can be evaluated in: exact rationals, and IEEE double, long double
 /// and CLN long floats at 128, 192, 384 and 3392 bits (mp30 ... mp1000), each with running
-/// error bounds (core/tracked.h). Adding a type here (and to eval/arithmetic.h) is the only
+/// error bounds (core/tracked.h). Adding a type here (and to check/arithmetic.h) is the only
 /// change a new arithmetic needs in the claims layer; a claim is instantiated once per type.
 using ClaimScalarTypes = std::tuple<Rational, Tracked<double>, Tracked<long double>, Tracked<MpFloat<30>>, Tracked<MpFloat<50>>,
                                     Tracked<MpFloat<100>>, Tracked<MpFloat<1000>>>;

@@ -3,7 +3,7 @@
 // coordinates: a proof). The value of a scalar expression is a RatePoly: a polynomial in the
 // input rates whose coefficients are numbers of the configuration.
 //
-// Locality (for proofs for every n, eval/prove.h). The argument that lifts a proof on generic
+// Locality (for proofs for every n, proof/prove.h). The argument that lifts a proof on generic
 // vectors to every n needs each coefficient of a monomial in the rates to depend only on the
 // sides the monomial involves and on r_{n-2}, r_{n-1}, K_n. The evaluator records where an
 // expression breaks that: an index that names a particular input (r[1]), a joint or

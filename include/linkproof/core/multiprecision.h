@@ -15,7 +15,7 @@
 // Conversion from an exact rational rounds once, at the target precision (cl_float(q, format));
 // never through double. There is no NaN or infinity: a division by an exact zero throws
 // cln's division_by_0_exception; generic code tests is_zero before dividing, as it must for
-// exact rationals anyway. The ladder instantiates D = 30, 50, 100, 1000 (eval/ladder.h).
+// exact rationals anyway. The ladder instantiates D = 30, 50, 100, 1000 (numerics/ladder.h).
 //
 // Tracked<MpFloat<D>> (TrackedTraits below) gives MpFloat a running error bound, so claims can
 // be judged in it (--arith mp30 ... mp1000). Its radius is a WideBound (core/wide_bound.h):

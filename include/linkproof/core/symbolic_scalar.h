@@ -5,7 +5,7 @@
 // The meaning of is_zero changes with the type: for an expression it is "identically zero as a
 // rational function" (normal() of the expression is 0). A construction that divides by a
 // polynomial that is not identically zero therefore goes on, and the result holds
-// *generically*: the denominators it divided by are where it may fail (see eval/prove.h, which
+// *generically*: the denominators it divided by are where it may fail (see proof/prove.h, which
 // lists them). Expressions are not normalised after each operation (that would be quadratic in
 // the work); only zero tests and final results are.
 #pragma once
@@ -23,7 +23,7 @@ namespace linkproof {
 
 /// Records every non-constant expression tested for zero while it lives (one per thread): the
 /// quantities a symbolic evaluation divided by, or branched on. A proof lists where they
-/// vanish (eval/prove.h).
+/// vanish (proof/prove.h).
 class ZeroTestLog {
  public:
   ZeroTestLog();

@@ -16,7 +16,7 @@
 //
 // The construction is written once, in construct_four_bar_steps: plain values and a status per
 // step (geometry/construction_steps.h), no exception, string or allocation, so that the
-// construction route (eval/routes.h) can run it for every j of a large polygon. The points and
+// construction route (numerics/routes.h) can run it for every j of a large polygon. The points and
 // lines shared by every four-bar j of a polygon (K_{n-2}, K_{n-1}, K_n) form a FourBarFrame,
 // built once per polygon.
 //
@@ -111,7 +111,7 @@ struct FourBarSteps {
 /// A5.2 beta_j towards P_j); ratios are directed and beta_j is ccw-positive, and lambda_j, mu_j
 /// are formed from those (construct_four_bar applies the A5.6 misreadings of the values).
 ///
-/// Written for a loop over j in double (eval/routes.h): always inlined, the statuses kept in
+/// Written for a loop over j in double (numerics/routes.h): always inlined, the statuses kept in
 /// locals and stored once, so that the result lives in registers. (Through memory, GCC merges
 /// tests of adjacent one-byte statuses into one wide load, which stalls on the byte stores.)
 template <class T>

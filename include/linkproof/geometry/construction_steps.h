@@ -5,7 +5,7 @@
 //   cot_signed_angle    cot of the signed angle at a vertex (beta_j, gamma_j)
 // Each comes in two forms that share the arithmetic:
 //   * a plain form that writes the result and returns a StepStatus: no exception, no string,
-//     no allocation (the hot path of the construction route, eval/routes.h);
+//     no allocation (the hot path of the construction route, numerics/routes.h);
 //   * a throwing form (`construct_...`, `compute_...`) that names the undefined quantity and
 //     why (SPEC A6): the `_lazy` variants take callables for the names, so that strings are made
 //     only when a quantity is undefined.

@@ -24,46 +24,20 @@
 //
 // - A joint has a unique name, `type` revolute or prismatic, exactly two different links and a
 //   point `at`; a prismatic joint also a non-zero `axis` (links[0] is the guide that carries the
-//   axis, links[1] the slider: geometry/linkage.h). Every link must be connected to the ground.
+//   axis, links[1] the slider: mechanism/linkage.h). Every link must be connected to the ground.
 // - Closure: the links are the rigid bodies through their joints, so joint positions close every
 //   loop by construction. Declared `dimensions` are what positions read from data can violate:
 //   without `tolerance` each must hold exactly, with it within the tolerance; otherwise the
 //   scene is refused ("does not close at the given positions") naming the dimension.
-// - Mobility and the number of inputs are checked when solving (symbolic/mechanism_solve.h).
+// - Mobility and the number of inputs are checked when solving (mechanism/mechanism_solve.h).
 // Errors: InputError(source, field, problem), fields like "mechanism.joints[3].axis".
 #pragma once
 
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "linkproof/geometry/linkage.h"
+#include "linkproof/mechanism/mechanism_scene.h"
 
 namespace linkproof {
-
-struct MechanismPoint {
-  std::string name;
-  int link = 0;
-  Vec2<Rational> at;
-};
-
-struct LinkDimension {
-  int joint_a = 0, joint_b = 0;
-  Rational length;
-};
-
-struct MechanismScene {
-  std::string name;
-  std::string source;
-  Linkage linkage;
-  std::vector<MechanismInput> inputs;
-  std::vector<MechanismPoint> points;
-  std::vector<LinkDimension> dimensions;
-  std::optional<Rational> tolerance;
-  std::vector<std::string> catalogues;
-  /// max over dimensions of | |AB| - length | (an approximation in double; 0 if none).
-  double dimension_residual = 0;
-};
 
 /// True if the file is a YAML map with a top-level `mechanism` key (false for anything else,
 /// including unreadable files: the polygon reader then reports the problem).

@@ -1,4 +1,4 @@
-// Renderers of the stability study (eval/bench_study.h), written by `linkproof bench`:
+// Renderers of the stability study (numerics/bench_study.h), written by `linkproof bench`:
 //   bench.md            error-vs-time table (route x arithmetic), one section per extreme family
 //                       (error of each route in double vs the parameter, condition estimates,
 //                       where each route fails and why, the route to trust), adaptive mode;
@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "linkproof/eval/bench_study.h"
+#include "linkproof/numerics/bench_study.h"
 
 namespace linkproof {
 

@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "linkproof/eval/count_claim.h"
+#include "linkproof/count/count_claim.h"
 
 namespace linkproof {
 

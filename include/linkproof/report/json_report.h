@@ -4,8 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "linkproof/eval/check.h"
-#include "linkproof/eval/sweep.h"
+#include "linkproof/check/check.h"
+#include "linkproof/check/sweep.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-// Reports of a mechanism check (eval/mechanism_check.h): JSON and text.
+// Reports of a mechanism check (mechanism/mechanism_check.h): JSON and text.
 //
 // JSON contract (`linkproof check --json` on a mechanism scene):
 //   {"scene": "...", "arithmetic": "exact", "mobility": 1,
@@ -21,7 +21,7 @@
 
 #include <ostream>
 
-#include "linkproof/eval/mechanism_check.h"
+#include "linkproof/mechanism/mechanism_check.h"
 
 namespace linkproof {
 

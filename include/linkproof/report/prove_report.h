@@ -9,7 +9,7 @@
 #include <ostream>
 #include <vector>
 
-#include "linkproof/eval/prove.h"
+#include "linkproof/proof/prove.h"
 
 namespace linkproof {
 

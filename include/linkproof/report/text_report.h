@@ -4,8 +4,8 @@
 
 #include <ostream>
 
-#include "linkproof/eval/check.h"
-#include "linkproof/eval/sweep.h"
+#include "linkproof/check/check.h"
+#include "linkproof/check/sweep.h"
 
 namespace linkproof {
 

@@ -1,0 +1,78 @@
+// Checking a catalogue of claims on one polygon: the library's main entry point.
+//
+//   GroundTruthEngine engine;
+//   PolygonCheck r = check_polygon(engine, dijksman1966::catalogue(), "pentagon", polygon, rates,
+//                                  Arithmetic::Exact);
+//   r.claims[k].verdict, r.omega[j], ... ; exit_status(r) gives the CLI's exit code.
+//
+// Results are values in text form (exact "p/q", or shortest round-trip decimals), so the
+// report layer and callers need not know the scalar type.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linkproof/claims/claim.h"
+#include "linkproof/core/error.h"
+#include "linkproof/check/arithmetic.h"
+#include "linkproof/check/judge.h"
+
+namespace linkproof {
+
+struct ClaimOutcome {
+  ClaimInfo info;
+  Verdict verdict = Verdict::Error;
+  /// The comparison shown in summaries: the first whose verdict is the claim's verdict.
+  ComparisonOutcome headline;
+  std::vector<ComparisonOutcome> instances;
+  std::vector<ComparisonOutcome> terms;
+  std::string error;  ///< set when the evaluation itself threw (verdict Error)
+
+  /// True if this outcome is what the claim is expected to do, or says nothing against it
+  /// (undefined/inconclusive). An erratum reading that happens to hold here is not a failure.
+  bool is_as_expected() const;
+  /// Verdict Undefined, naming the quantity that does not exist and why.
+  void mark_undefined(const UndefinedQuantity& u) {
+    verdict = Verdict::Undefined;
+    headline.verdict = Verdict::Undefined;
+    headline.undefined_quantity = u.quantity();
+    headline.reason = u.reason();
+  }
+  /// A true claim that fails: the verifier's "no".
+  bool is_unexpected_failure() const { return info.expected == Expectation::Holds && verdict == Verdict::Fails; }
+};
+
+struct PolygonCheck {
+  std::string scene;
+  Arithmetic arithmetic = Arithmetic::Exact;
+  int n = 0;
+  /// Dead centre (D = 0): the ground truth does not exist; every claim is then undefined.
+  bool dead_centre = false;
+  std::string dead_centre_reason;
+  /// omega_{j,n}, omega-dot_{j,n} for j = 1..n (0-based); nullopt where undefined.
+  std::vector<std::optional<std::string>> omega, omega_dot;
+  /// D = r_{n-2} x r_{n-1} in the arithmetic's text form.
+  std::string determinant;
+  std::vector<ClaimOutcome> claims;
+  std::vector<std::string> not_applicable;  ///< ids of claims that do not apply to this n
+  std::string tolerance_rule;
+};
+
+/// Evaluates every applicable claim of `catalogue` on the polygon in arithmetic `a`.
+/// Never throws for a valid polygon (see polygon_input_problem): a claim whose evaluation
+/// throws gets the verdict Error with the message.
+PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
+                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a);
+
+/// Runs one claim in scalar type T on a prepared context.
+template <class T>
+ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context);
+
+/// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim's evaluation errored.
+int exit_status(const PolygonCheck& check);
+/// The CLI's exit code of a list of outcomes: 3 if any verdict is Error, else 1 if a true claim
+/// fails, else 0. Shared by polygon and mechanism checks.
+int exit_status(const std::vector<ClaimOutcome>& outcomes);
+
+}  // namespace linkproof

@@ -1,0 +1,101 @@
+// Checking claims on a mechanism scene: the exact truth of every link and joint, and a verdict
+// per claim. The mechanism counterpart of check/check.h (polygons).
+//
+//   MechanismScene s = load_mechanism_scene("verify/scenes/mechanisms/fig5_eightbar.yaml");
+//   MechanismCheck r = check_mechanism(s, claims, Arithmetic::Exact);
+//
+// Truth: the symbolic loop closure (mechanism/mechanism_closure.h) solved exactly. Built-in
+// claims, run on every scene:
+//   mechanism.routes_agree     the GiNaC closure and the rigid-body vector formulas give the
+//                              same q-dot and q-ddot (two independent derivations);
+//   mechanism.driver_inversion (mobility 1) taking any other moving link as the driver, with its
+//                              rates from the solution, gives the same motion (SPEC C: the
+//                              results do not depend on which link drives).
+// Paper-specific claims come from catalogues (verify/catalogue), selected by the scene's
+// `catalogue` field. Claims are evaluated in exact arithmetic; --arith double solves the
+// rigid-body route in IEEE double and reports the values with the system's condition number.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linkproof/check/arithmetic.h"
+#include "linkproof/check/check.h"
+#include "linkproof/mechanism/mechanism_scene.h"
+#include "linkproof/mechanism/mechanism_solve.h"
+
+namespace linkproof {
+
+/// What a mechanism claim may use: the scene and its exact solution.
+struct MechanismContext {
+  const MechanismScene& scene;
+  const MechanismSolution<Rational>& truth;
+};
+
+struct MechanismClaim {
+  ClaimInfo info;
+  std::function<ClaimSides<Rational>(const MechanismContext&)> evaluate;
+  /// Optional: false if the claim does not apply to this mechanism (listed as not applicable).
+  std::function<bool(const MechanismContext&)> applies;
+};
+
+/// A table of named quantities for reports (e.g. the vectors of an acceleration polygon).
+struct ReportTable {
+  std::string title;
+  std::vector<std::pair<std::string, std::string>> rows;
+};
+
+/// A named set of claims (one paper's), selectable by a scene's `catalogue` field, with the
+/// tables it adds to the report (may be empty).
+struct MechanismCatalogue {
+  std::string name;
+  std::vector<MechanismClaim> claims;
+  std::function<std::vector<ReportTable>(const MechanismContext&)> tables;
+};
+
+struct MechanismCheck {
+  std::string scene;
+  Arithmetic arithmetic = Arithmetic::Exact;
+  int mobility = 0, grubler = 0, rank = 0, loops = 0, unknowns = 0;
+  std::vector<std::string> link_names;
+  /// Text per link (relative to the ground), per joint, per tracer point.
+  std::vector<std::string> omega, omega_dot;
+  struct PointMotion {
+    std::string name;
+    std::string v[2], a[2];
+    std::string slide, slide_dot;  ///< prismatic joints only
+  };
+  std::vector<PointMotion> joints, points;
+  /// Every pair of links i < k (in link order): omega_ik = omega_i - omega_k, and omega-dot_ik.
+  struct Relative {
+    std::string i, k, omega, omega_dot;
+  };
+  std::vector<Relative> relative;
+  std::vector<ReportTable> tables;
+  /// 2-norm condition number of the velocity system (constraints + input rows), in double.
+  double condition = 0;
+  /// The position closure residual (max |row| at the given joints; "0" when exact).
+  std::string closure_residual;
+  double dimension_residual = 0;
+  std::vector<ClaimOutcome> claims;
+  std::vector<std::string> not_applicable;
+};
+
+/// The exact solution by the symbolic route (throws InputError for bad mobility/inputs).
+MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& scene);
+
+/// Solves and runs the built-in claims plus those of `catalogues` (the scene's). Throws
+/// InputError for a scene that cannot be solved (locked, wrong number of inputs, ...).
+MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<MechanismCatalogue>& catalogues,
+                               Arithmetic a);
+
+/// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim errored.
+int exit_status(const MechanismCheck& check);
+
+/// The built-in claims (routes_agree, driver_inversion).
+std::vector<MechanismClaim> builtin_mechanism_claims();
+
+}  // namespace linkproof

@@ -1,0 +1,119 @@
+#include "linkproof/check/check.h"
+
+#include <cln/float.h>
+
+namespace linkproof {
+
+bool ClaimOutcome::is_as_expected() const {
+  if (verdict == Verdict::Error) return false;
+  if (info.expected == Expectation::Holds) return verdict != Verdict::Fails;
+  return true;
+}
+
+template <class T>
+ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
+  ClaimOutcome out;
+  out.info = claim.info;
+  try {
+    const ClaimSides<T> sides = claim.function<T>()(context);
+    Verdict v = Verdict::Holds;
+    for (const auto& c : sides.instances) {
+      out.instances.push_back(judge(c));
+      v = combine(v, out.instances.back().verdict);
+    }
+    for (const auto& c : sides.terms) {
+      out.terms.push_back(judge(c));
+      v = combine(v, out.terms.back().verdict);
+    }
+    out.verdict = v;
+    if (out.instances.empty()) {
+      out.verdict = Verdict::Error;
+      out.error = "the claim produced no comparison";
+      return out;
+    }
+    out.headline = out.instances.front();
+    for (const auto& group : {&out.instances, &out.terms}) {
+      bool found = false;
+      for (const auto& c : *group)
+        if (c.verdict == v) {
+          out.headline = c;
+          found = true;
+          break;
+        }
+      if (found) break;
+    }
+  } catch (const UndefinedQuantity& u) {
+    out.mark_undefined(u);
+  } catch (const cln::floating_point_exception& e) {
+    // CLN long floats (mp arithmetics) have no denormals or infinity: underflow and overflow
+    // throw (core/multiprecision.h). The precision says nothing here, so neither may the verdict.
+    out.verdict = Verdict::Inconclusive;
+    out.headline.verdict = Verdict::Inconclusive;
+    out.headline.reason = std::string("CLN ") + e.what() + " (exponent range exceeded in this precision)";
+  } catch (const std::exception& e) {
+    out.verdict = Verdict::Error;
+    out.error = e.what();
+    out.headline.verdict = Verdict::Error;
+    out.headline.reason = e.what();
+  }
+  return out;
+}
+
+template ClaimOutcome run_claim<Rational>(const Claim&, const PolygonContext<Rational>&);
+template ClaimOutcome run_claim<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&);
+template ClaimOutcome run_claim<Tracked<long double>>(const Claim&, const PolygonContext<Tracked<long double>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<30>>>(const Claim&, const PolygonContext<Tracked<MpFloat<30>>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<50>>>(const Claim&, const PolygonContext<Tracked<MpFloat<50>>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<100>>>(const Claim&, const PolygonContext<Tracked<MpFloat<100>>>&);
+template ClaimOutcome run_claim<Tracked<MpFloat<1000>>>(const Claim&, const PolygonContext<Tracked<MpFloat<1000>>>&);
+
+PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
+                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a) {
+  PolygonCheck r;
+  r.scene = scene;
+  r.arithmetic = a;
+  r.n = polygon.n();
+  r.determinant = format_rational(polygon.dead_centre_determinant());
+  r.dead_centre = cln::zerop(polygon.dead_centre_determinant());
+  if (r.dead_centre) r.dead_centre_reason = dead_centre_error().reason();
+
+  with_scalar_type(a, [&]<class T>() {
+    const PolygonContext<T> ctx = build_polygon_context<T>(engine, polygon, rates);
+    r.tolerance_rule = tolerance_rule<T>();
+    if (a != Arithmetic::Exact) r.determinant = to_text(ctx.closed().has_value() ? ctx.closed().get().D : from_int<T>(0));
+    for (int j = 0; j < r.n; ++j) {
+      r.omega.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega[j])) : std::nullopt);
+      r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega_dot[j])) : std::nullopt);
+    }
+    for (const Claim& claim : catalogue) {
+      if (!claim.info.applies_to(r.n)) {
+        r.not_applicable.push_back(claim.info.id);
+        continue;
+      }
+      r.claims.push_back(run_claim(claim, ctx));
+    }
+    return 0;
+  });
+  // At the dead centre the inputs are still known; only sides n-2 and n-1 are undefined.
+  if (r.dead_centre) {
+    for (int j = 0; j < r.n - 3; ++j) {
+      r.omega[j] = format_rational(rates.omega[j]);
+      r.omega_dot[j] = format_rational(rates.omega_dot[j]);
+    }
+    r.omega[r.n - 1] = r.omega_dot[r.n - 1] = "0";
+  }
+  return r;
+}
+
+int exit_status(const PolygonCheck& check) { return exit_status(check.claims); }
+
+int exit_status(const std::vector<ClaimOutcome>& outcomes) {
+  int status = 0;
+  for (const auto& c : outcomes) {
+    if (c.verdict == Verdict::Error) return 3;
+    if (c.is_unexpected_failure()) status = 1;
+  }
+  return status;
+}
+
+}  // namespace linkproof

@@ -1,0 +1,81 @@
+#include "linkproof/count/counting.h"
+
+#include <chrono>
+
+#include "linkproof/geometry/closed_forms.h"
+
+namespace linkproof {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+RankResult state_of(const RowEchelon<Rational>& e, double seconds) {
+  return {e.relations(), e.columns(), e.rank(), e.augmented_rank(), seconds};
+}
+
+}  // namespace
+
+RankResult add_and_rank(RowEchelon<Rational>& echelon, const std::vector<RateRelation>& relations) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const auto& r : relations) echelon.add(r.row, r.rhs);
+  return state_of(echelon, seconds_since(t0));
+}
+
+RankResult count_triangle_relations(int n) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const RelativeRates rates(n);
+  RowEchelon<Rational> e(rates.columns());
+  add_and_rank(e, triangle_relations(rates));
+  return state_of(e, seconds_since(t0));
+}
+
+std::vector<Rational> side_velocities(const Polygon<Rational>& p, const InputRates<Rational>& in) {
+  return compute_closed_form_motion(p, in).omega;
+}
+
+std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>& p,
+                                                         const std::vector<Rational>& omega) {
+  const int n = p.n();
+  LINKPROOF_ASSERT(n >= 3 && static_cast<int>(omega.size()) == n, "count_fixed_side_relations: bad input");
+  BodyPolygon bp;
+  bp.polygon = p;
+  for (int b = 0; b < n; ++b) bp.bodies.push_back(b);
+  const RelativeRates rates(n);
+
+  // Build the three families first (this throws at a dead centre before anything is ranked).
+  std::vector<RateRelation> velocity, eq22, acceleration;
+  for (int f = 1; f <= n; ++f) {
+    const BodyPolygon q = with_fixed_side(bp, f);
+    for (auto& r : velocity_relations(rates, q)) velocity.push_back(std::move(r));
+    auto acc = acceleration_relations(rates, q, omega);
+    eq22.push_back(acc[0]);
+    for (auto& r : acc) acceleration.push_back(std::move(r));
+  }
+
+  const auto t0 = std::chrono::steady_clock::now();
+  RowEchelon<Rational> tri(rates.columns());
+  add_and_rank(tri, triangle_relations(rates));
+  const RankResult tri_state = state_of(tri, seconds_since(t0));
+
+  std::vector<FixedSideFamily> out;
+  const auto rank_family = [&](std::string name, const std::vector<RateRelation>& family) {
+    const auto t1 = std::chrono::steady_clock::now();
+    RowEchelon<Rational> e = tri;  // the reduced triangle basis, reused
+    add_and_rank(e, family);
+    FixedSideFamily fam;
+    fam.name = std::move(name);
+    fam.relations = static_cast<long>(family.size());
+    fam.triangles = tri_state;
+    fam.combined = state_of(e, tri_state.seconds + seconds_since(t1));
+    out.push_back(std::move(fam));
+  };
+  rank_family("velocity (5),(6)", velocity);
+  rank_family("acceleration (22)", eq22);
+  rank_family("acceleration (22)+companion", acceleration);
+  return out;
+}
+
+}  // namespace linkproof

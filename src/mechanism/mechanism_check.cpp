@@ -1,0 +1,216 @@
+#include "linkproof/mechanism/mechanism_check.h"
+
+#include <Eigen/SVD>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "linkproof/mechanism/mechanism_closure.h"
+
+namespace linkproof {
+
+namespace {
+
+// 2-norm condition of [A; input rows] in double (Eigen's SVD): sigma_max / sigma_min.
+double velocity_condition(const MechanismScene& s) {
+  DenseMatrix<double> A = rigid_body_constraint_matrix<double>(s.linkage);
+  std::vector<double> b(A.size(), 0.0);
+  append_input_rows(s.linkage, s.inputs, A, b, false, s.source);
+  Eigen::MatrixXd M(static_cast<Eigen::Index>(A.size()), static_cast<Eigen::Index>(s.linkage.unknown_count()));
+  for (size_t r = 0; r < A.size(); ++r)
+    for (size_t c = 0; c < A[r].size(); ++c) M(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = A[r][c];
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(M);
+  const auto& sv = svd.singularValues();
+  if (sv.size() == 0 || sv(sv.size() - 1) == 0) return INFINITY;
+  return sv(0) / sv(sv.size() - 1);
+}
+
+template <class T>
+MechanismSolution<T> solve_by_vector_route(const MechanismScene& s, const Linkage& g,
+                                           const std::vector<MechanismInput>& inputs) {
+  return solve_mechanism<T>(
+      g, inputs, rigid_body_constraint_matrix<T>(g),
+      [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd); }, s.source);
+}
+
+template <class T>
+void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMotion<T>& m) {
+  const Linkage& g = s.linkage;
+  for (int l = 0; l < g.link_count(); ++l) {
+    r.omega.push_back(to_text(m.omega[static_cast<size_t>(l)]));
+    r.omega_dot.push_back(to_text(m.omega_dot[static_cast<size_t>(l)]));
+  }
+  for (int i = 0; i < g.link_count(); ++i)
+    for (int k = i + 1; k < g.link_count(); ++k)
+      r.relative.push_back({g.link_name(i), g.link_name(k),
+                            to_text(m.omega[static_cast<size_t>(i)] - m.omega[static_cast<size_t>(k)]),
+                            to_text(m.omega_dot[static_cast<size_t>(i)] - m.omega_dot[static_cast<size_t>(k)])});
+  for (int j = 0; j < g.joint_count(); ++j) {
+    MechanismCheck::PointMotion p;
+    p.name = g.joint(j).name;
+    const auto& v = m.joint_v[static_cast<size_t>(j)];
+    const auto& a = m.joint_a[static_cast<size_t>(j)];
+    p.v[0] = to_text(v.x), p.v[1] = to_text(v.y), p.a[0] = to_text(a.x), p.a[1] = to_text(a.y);
+    if (g.joint(j).type == JointType::Prismatic)
+      p.slide = to_text(m.slide[static_cast<size_t>(j)]), p.slide_dot = to_text(m.slide_dot[static_cast<size_t>(j)]);
+    r.joints.push_back(std::move(p));
+  }
+  for (const MechanismPoint& pt : s.points) {
+    // A tracer point moves with its link: from the link's first joint by the rigid-body formulas.
+    int j0 = 0;
+    while (g.joint(j0).links[0] != pt.link && g.joint(j0).links[1] != pt.link) ++j0;
+    const LinkageJoint& j = g.joint(j0);
+    const size_t l = static_cast<size_t>(pt.link);
+    Vec2<T> v0 = m.joint_v[static_cast<size_t>(j0)], a0 = m.joint_a[static_cast<size_t>(j0)];
+    if (j.type == JointType::Prismatic && pt.link == j.links[0]) {
+      // joint_v/a are the slider's point; the guide's point differs by the sliding motion.
+      const Vec2<T> u = vec_from_rational<T>(j.axis);
+      const T w = m.omega[l], sd = m.slide[static_cast<size_t>(j0)];
+      v0 = v0 - sd * u;
+      a0 = a0 - (m.slide_dot[static_cast<size_t>(j0)] * u + (from_int<T>(2) * w * sd) * perp(u));
+    }
+    const Vec2<T> d = vec_from_rational<T>(pt.at - j.at);
+    const Vec2<T> v = v0 + m.omega[l] * perp(d);
+    const Vec2<T> a = a0 + m.omega_dot[l] * perp(d) - (m.omega[l] * m.omega[l]) * d;
+    MechanismCheck::PointMotion p;
+    p.name = pt.name;
+    p.v[0] = to_text(v.x), p.v[1] = to_text(v.y), p.a[0] = to_text(a.x), p.a[1] = to_text(a.y);
+    r.points.push_back(std::move(p));
+  }
+}
+
+ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx) {
+  ClaimOutcome out;
+  out.info = claim.info;
+  try {
+    const ClaimSides<Rational> sides = claim.evaluate(ctx);
+    Verdict v = Verdict::Holds;
+    for (const auto& c : sides.instances) out.instances.push_back(judge(c));
+    for (const auto& c : sides.terms) out.terms.push_back(judge(c));
+    for (const auto& o : out.instances) v = combine(v, o.verdict);
+    for (const auto& o : out.terms) v = combine(v, o.verdict);
+    out.verdict = v;
+    for (const auto* list : {&out.instances, &out.terms})
+      for (const auto& o : *list)
+        if (o.verdict == v && out.headline.label.empty()) out.headline = o;
+  } catch (const UndefinedQuantity& u) {
+    out.mark_undefined(u);
+  } catch (const std::exception& e) {
+    out.verdict = Verdict::Error;
+    out.error = e.what();
+  }
+  return out;
+}
+
+}  // namespace
+
+MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& s) {
+  const MechanismClosure closure(s.linkage);
+  return solve_mechanism<Rational>(
+      s.linkage, s.inputs, closure.constraint_matrix(),
+      [&](const std::vector<Rational>& qd) { return closure.acceleration_rhs(qd); }, s.source);
+}
+
+std::vector<MechanismClaim> builtin_mechanism_claims() {
+  std::vector<MechanismClaim> out;
+  out.push_back(MechanismClaim{
+      ClaimInfo{"mechanism.routes_agree", "linkproof (issue 4): two derivations of the kinematics",
+                "the GiNaC loop closure differentiated twice and the rigid-body vector formulas "
+                "(omega J r, omega-dot J r - omega^2 r, Coriolis 2 omega_guide sigma-dot J u) give the same "
+                "q-dot and q-ddot",
+                Expectation::Holds, "", 4, 0},
+      [](const MechanismContext& c) {
+        const auto other = solve_by_vector_route<Rational>(c.scene, c.scene.linkage, c.scene.inputs);
+        ClaimSides<Rational> sides;
+        for (size_t k = 0; k < other.qdot.size(); ++k) {
+          sides.instances.push_back({fmt::format("q_dot[{}]", k), c.truth.qdot[k], other.qdot[k]});
+          sides.instances.push_back({fmt::format("q_ddot[{}]", k), c.truth.qddot[k], other.qddot[k]});
+        }
+        return sides;
+      },
+      {}});
+  out.push_back(MechanismClaim{
+      ClaimInfo{"mechanism.driver_inversion", "Koshel et al. (seed 003), SPEC.md C: central claim",
+                "taking another moving link as the driver, with its omega and omega-dot from the solution, "
+                "gives the same omega and omega-dot for every link",
+                Expectation::Holds, "", 4, 0},
+      [](const MechanismContext& c) {
+        const Linkage& g = c.scene.linkage;
+        ClaimSides<Rational> sides;
+        for (int l = 0; l < g.link_count(); ++l) {
+          const Rational& w = c.truth.motion.omega[static_cast<size_t>(l)];
+          const bool is_input = c.scene.inputs[0].kind == MechanismInput::Kind::Link && c.scene.inputs[0].index == l;
+          if (l == g.ground() || is_input || cln::zerop(w)) continue;  // a link at rest cannot drive
+          MechanismInput in{MechanismInput::Kind::Link, l, w, c.truth.motion.omega_dot[static_cast<size_t>(l)]};
+          const auto inv = solve_by_vector_route<Rational>(c.scene, g, {in});
+          for (int k = 0; k < g.link_count(); ++k) {
+            sides.instances.push_back({fmt::format("driver {}: omega[{}]", g.link_name(l), g.link_name(k)),
+                                       c.truth.motion.omega[static_cast<size_t>(k)], inv.motion.omega[static_cast<size_t>(k)]});
+            sides.instances.push_back({fmt::format("driver {}: omega_dot[{}]", g.link_name(l), g.link_name(k)),
+                                       c.truth.motion.omega_dot[static_cast<size_t>(k)],
+                                       inv.motion.omega_dot[static_cast<size_t>(k)]});
+          }
+        }
+        return sides;
+      },
+      [](const MechanismContext& c) { return c.truth.mobility == 1; }});
+  return out;
+}
+
+MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<MechanismCatalogue>& catalogues,
+                               Arithmetic a) {
+  const Linkage& g = s.linkage;
+  MechanismCheck r;
+  r.scene = s.name;
+  r.arithmetic = a;
+  r.grubler = g.grubler_mobility();
+  r.loops = static_cast<int>(g.loops().size());
+  r.unknowns = g.unknown_count();
+  r.link_names = g.link_names();
+  const MechanismClosure closure(g);
+  const MechanismSolution<Rational> truth = solve_mechanism<Rational>(
+      g, s.inputs, closure.constraint_matrix(),
+      [&](const std::vector<Rational>& qd) { return closure.acceleration_rhs(qd); }, s.source);
+  r.mobility = truth.mobility;
+  r.rank = truth.rank;
+  r.condition = velocity_condition(s);
+  Rational residual = 0;
+  for (const Rational& x : closure.position_residual()) residual = cln::max(residual, cln::abs(x));
+  r.closure_residual = format_rational(residual);
+  r.dimension_residual = s.dimension_residual;
+  if (a == Arithmetic::Exact) {
+    fill_motion(r, s, truth.motion);
+  } else {
+    with_scalar_type(a, [&]<class T>() {
+      if constexpr (!ScalarTraits<T>::is_exact) {
+        using F = decltype(T{}.v);  // the plain IEEE type of the arithmetic
+        fill_motion(r, s, solve_by_vector_route<F>(s, g, s.inputs).motion);
+      }
+    });
+  }
+  const MechanismContext ctx{s, truth};
+  std::vector<MechanismClaim> all = builtin_mechanism_claims();
+  for (const MechanismCatalogue& cat : catalogues) {
+    all.insert(all.end(), cat.claims.begin(), cat.claims.end());
+    if (!cat.tables) continue;
+    try {
+      for (auto& t : cat.tables(ctx)) r.tables.push_back(std::move(t));
+    } catch (const UndefinedQuantity& u) {  // e.g. a four-bar at its dead centre
+      r.tables.push_back(ReportTable{cat.name, {{"undefined", u.quantity() + ": " + u.reason()}}});
+    }
+  }
+  for (const MechanismClaim& c : all) {
+    if (c.applies && !c.applies(ctx)) {
+      r.not_applicable.push_back(c.info.id);
+      continue;
+    }
+    r.claims.push_back(run_mechanism_claim(c, ctx));
+  }
+  return r;
+}
+
+int exit_status(const MechanismCheck& check) { return exit_status(check.claims); }
+
+}  // namespace linkproof

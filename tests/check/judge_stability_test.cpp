@@ -1,0 +1,118 @@
+// Stability claims (issue 5, item 6): near a singularity of the construction a floating-point
+// claim is `inconclusive`, never a false `fails`, and says how its tolerance was derived and
+// what to trust instead.
+#include <gtest/gtest.h>
+
+#include "dijksman1966.h"
+#include "linkproof/check/check.h"
+#include "linkproof/numerics/extreme_families.h"
+
+namespace linkproof {
+namespace {
+
+Rational ten_to_minus(int k) {
+  Rational p = 1;
+  for (int i = 0; i < k; ++i) p = p / 10;
+  return p;
+}
+
+TEST(JudgeStability, NearAPoleOfTheConstructionTrueClaimsAreInconclusiveNotFailsAndNameWhatToTrust) {
+  GroundTruthEngine engine;
+  for (const char* family : {"q_infinity", "beta_zero", "p_infinity", "dead_centre"}) {
+    for (int k : {8, 12, 14}) {
+      SCOPED_TRACE(std::string(family) + " at eps = 1e-" + std::to_string(k));
+      const ExtremeCase c = find_extreme_family(family)->make(ten_to_minus(k));
+      const PolygonCheck r =
+          check_polygon(engine, dijksman1966::catalogue(), family, c.polygon, c.rates, Arithmetic::Double);
+      int inconclusive = 0;
+      for (const ClaimOutcome& claim : r.claims) {
+        if (claim.info.expected == Expectation::Holds) {
+          EXPECT_NE(claim.verdict, Verdict::Fails) << claim.info.id;
+        }
+        for (const auto* list : {&claim.instances, &claim.terms}) {
+          for (const ComparisonOutcome& o : *list) {
+            if (!o.tolerance.empty()) {
+              EXPECT_NE(o.tolerance_derivation.find("condition(lhs)"), std::string::npos);
+            }
+            if (o.verdict == Verdict::Inconclusive) {
+              ++inconclusive;
+              EXPECT_NE(o.trust_route.find("exact arithmetic"), std::string::npos) << claim.info.id;
+            }
+          }
+        }
+      }
+      if (k >= 12) {
+        EXPECT_GT(inconclusive, 0);
+      }
+    }
+  }
+}
+
+// Q_1 at infinity (SPEC A6) at eps = 1e-14: the construction loses ~1e-16/eps relative in
+// double, so double is inconclusive there; mp1000 (u = 2^-3392) loses the same factor of a far
+// smaller u and decides every comparison exactly as exact arithmetic does.
+TEST(JudgeStability, Mp1000DecidesWhereDoubleIsInconclusiveNearQAtInfinity) {
+  GroundTruthEngine engine;
+  const ExtremeCase c = find_extreme_family("q_infinity")->make(ten_to_minus(14));
+  const auto run = [&](Arithmetic a) {
+    return check_polygon(engine, dijksman1966::catalogue(), "q_infinity", c.polygon, c.rates, a);
+  };
+  const PolygonCheck exact = run(Arithmetic::Exact), dbl = run(Arithmetic::Double), mp = run(Arithmetic::Mp1000);
+  int double_inconclusive = 0;
+  for (size_t k = 0; k < exact.claims.size(); ++k) {
+    const ClaimOutcome& e = exact.claims[k];
+    ASSERT_NE(e.verdict, Verdict::Inconclusive);
+    double_inconclusive += dbl.claims[k].verdict == Verdict::Inconclusive;
+    if (dbl.claims[k].verdict != Verdict::Inconclusive) {
+      EXPECT_EQ(dbl.claims[k].verdict, e.verdict) << e.info.id;  // never a false holds/fails
+    }
+    EXPECT_EQ(mp.claims[k].verdict, e.verdict) << e.info.id << ": " << mp.claims[k].headline.reason;
+    for (size_t i = 0; i < e.instances.size(); ++i)
+      EXPECT_EQ(mp.claims[k].instances[i].verdict, e.instances[i].verdict) << e.info.id << " " << e.instances[i].label;
+  }
+  EXPECT_GT(double_inconclusive, 0);
+}
+
+// The same guarantee in CLN long floats: at eps = 1e-40 (below mp30's u = 2^-128 ~ 3e-39) mp30
+// is where double is at 1e-14. Every comparison either agrees with exact arithmetic or is
+// inconclusive; it is never a false holds or fails.
+TEST(JudgeStability, Mp30NearSingularitiesIsInconclusiveNeverWrong) {
+  GroundTruthEngine engine;
+  for (const char* family : {"q_infinity", "beta_zero", "p_infinity", "dead_centre"}) {
+    SCOPED_TRACE(family);
+    const ExtremeCase c = find_extreme_family(family)->make(ten_to_minus(40));
+    const PolygonCheck exact =
+        check_polygon(engine, dijksman1966::catalogue(), family, c.polygon, c.rates, Arithmetic::Exact);
+    const PolygonCheck mp = check_polygon(engine, dijksman1966::catalogue(), family, c.polygon, c.rates, Arithmetic::Mp30);
+    int inconclusive = 0;
+    for (size_t k = 0; k < exact.claims.size(); ++k) {
+      for (size_t i = 0; i < exact.claims[k].instances.size(); ++i) {
+        const ComparisonOutcome& m = mp.claims[k].instances[i];
+        const ComparisonOutcome& e = exact.claims[k].instances[i];
+        if (m.verdict == Verdict::Inconclusive) {
+          ++inconclusive;
+          EXPECT_NE(m.tolerance_derivation.find("u = 2^-128"), std::string::npos);
+          EXPECT_FALSE(m.trust_route.empty());
+        } else {
+          EXPECT_EQ(m.verdict, e.verdict) << exact.claims[k].info.id << " " << e.label;
+        }
+      }
+    }
+    EXPECT_GT(inconclusive, 0);
+  }
+}
+
+TEST(JudgeStability, WellConditionedDoubleChecksStillHoldWithADerivedTolerance) {
+  GroundTruthEngine engine;
+  const ExtremeCase c = find_extreme_family("q_infinity")->make(1);
+  const PolygonCheck r = check_polygon(engine, dijksman1966::catalogue(), "q1", c.polygon, c.rates, Arithmetic::Double);
+  for (const ClaimOutcome& claim : r.claims) {
+    if (claim.info.id != "dijksman1966.eq22") continue;
+    EXPECT_EQ(claim.verdict, Verdict::Holds);
+    EXPECT_FALSE(claim.headline.tolerance_derivation.empty());
+    EXPECT_TRUE(claim.headline.trust_route.empty());
+  }
+}
+
+}  // namespace
+}  // namespace linkproof
