@@ -2,8 +2,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
+#include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "support/cli_run.h"
 
@@ -26,6 +30,22 @@ TEST(Cli, CheckPentagonPrintsTableAndExitsZero) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("dijksman1966.eq22"), std::string::npos);
   EXPECT_NE(r.out.find("3755/1331"), std::string::npos);
+}
+
+// A pipe can be read only once: `check` must read the scene file once (it used to read it twice,
+// once to choose the reader and once to parse, and a pipe gave an empty second read).
+TEST(Cli, CheckReadsASceneFromAPipe) {
+  const std::string fifo = ::testing::TempDir() + "linkproof_scene_fifo";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::ifstream in(scene("pentagon.yaml"));
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::thread writer([&] { std::ofstream(fifo) << text; });
+  const CliRun r = run_cli({"check", fifo, "--json"});
+  writer.join();
+  std::remove(fifo.c_str());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("3755/1331"), std::string::npos) << r.out;
 }
 
 TEST(Cli, CheckJsonHonoursTheContract) {
