@@ -4,9 +4,9 @@
 
 namespace linkproof {
 
-bool ClaimOutcome::is_as_expected() const {
+bool ClaimOutcome::is_as_expected(bool strict) const {
   if (verdict == Verdict::Error) return false;
-  if (info.expected == Expectation::Holds) return verdict != Verdict::Fails;
+  if (info.expected == Expectation::Holds) return strict ? verdict == Verdict::Holds : verdict != Verdict::Fails;
   return true;
 }
 
@@ -105,13 +105,13 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
   return r;
 }
 
-int exit_status(const PolygonCheck& check) { return exit_status(check.claims); }
+int exit_status(const PolygonCheck& check) { return exit_status(check.claims, check.strict); }
 
-int exit_status(const std::vector<ClaimOutcome>& outcomes) {
+int exit_status(const std::vector<ClaimOutcome>& outcomes, bool strict) {
   int status = 0;
   for (const auto& c : outcomes) {
     if (c.verdict == Verdict::Error) return 3;
-    if (c.is_unexpected_failure()) status = 1;
+    if (!c.is_as_expected(strict)) status = 1;
   }
   return status;
 }

@@ -1,7 +1,10 @@
 #include "linkproof/claims/claim_expression.h"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
+#include <sstream>
+#include <unordered_map>
 #include <set>
 #include <utility>
 #include <vector>
@@ -85,15 +88,32 @@ class Scanner {
     tokenize();
     size_t i = 0;
     std::set<std::string> bound;
-    if (context_.j_is_free) bound.insert("j");
+    if (context_.j_is_free) {
+      bound.insert("j");
+      binding_ = IndexBinding::ForEachJ;
+    }
     expression(i, bound, /*in_index=*/false);
     if (tokens_[i].kind != Tok::End) fail(tokens_[i].offset, "unexpected '" + tokens_[i].text + "'");
   }
 
+  /// The indexed words met, with their index text (parsed into GiNaC by the caller).
+  struct RawIndexUse {
+    std::string word;
+    bool input_index;
+    std::string index_text;
+    IndexBinding binding;
+    std::string where;
+  };
+  const std::vector<RawIndexUse>& index_uses() const { return uses_; }
+
  private:
-  [[noreturn]] void fail(size_t offset, const std::string& problem) const {
+  std::string where(size_t offset) const {
     const auto [line, column] = positions_(offset);
-    throw InputError(context_.file + ":" + std::to_string(line) + ":" + std::to_string(column), context_.field, problem);
+    return context_.file + ":" + std::to_string(line) + ":" + std::to_string(column);
+  }
+
+  [[noreturn]] void fail(size_t offset, const std::string& problem) const {
+    throw InputError(where(offset), context_.field, problem);
   }
 
   void tokenize() {
@@ -107,9 +127,17 @@ class Scanner {
         tokens_.push_back({Tok::Name, text_.substr(start, i - start), start});
       } else if (std::isdigit(static_cast<unsigned char>(ch))) {
         while (i < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i]))) ++i;
-        if (i < text_.size() && (text_[i] == '.' || text_[i] == 'e' || text_[i] == 'E'))
-          fail(start, "'" + text_.substr(start, i - start + 1) +
-                          "...' is a decimal number, which GiNaC reads as a float: claims are exact, write a fraction such as 1/2");
+        if (i < text_.size() && (text_[i] == '.' || text_[i] == 'e' || text_[i] == 'E')) {
+          // The whole number as written (0.5, 1e-3, 2.5E+4), for the message.
+          size_t end = i + 1;
+          while (end < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[end])) ||
+                                        text_[end] == '.' || text_[end] == 'e' || text_[end] == 'E' ||
+                                        ((text_[end] == '-' || text_[end] == '+') &&
+                                         (text_[end - 1] == 'e' || text_[end - 1] == 'E'))))
+            ++end;
+          fail(start, "'" + text_.substr(start, end - start) +
+                          "' is a decimal number, which GiNaC reads as a float: claims are exact, write a fraction such as 1/2");
+        }
         tokens_.push_back({Tok::Number, text_.substr(start, i - start), start});
       } else if (std::string("+-*/^").find(ch) != std::string::npos) {
         tokens_.push_back({Tok::Op, std::string(1, ch), i++});
@@ -225,6 +253,23 @@ class Scanner {
                          w->kind == WordKind::SideVector || w->kind == WordKind::InputVector;
     if (indexed && !is_index) fail(open.offset, "'" + t.text + "' is indexed with [ ], as in " + t.text + "[j]");
     if (!indexed && is_index) fail(open.offset, "'" + t.text + "' is called with ( ), not indexed with [ ]");
+    if (indexed) {
+      const size_t first = tokens_[i].offset;
+      size_t close = i, depth = 0;
+      for (; tokens_[close].kind != Tok::End; ++close) {
+        if (tokens_[close].kind == Tok::Open) ++depth;
+        if (tokens_[close].kind == Tok::Close) {
+          if (depth == 0) break;
+          --depth;
+        }
+      }
+      const bool input = w->kind == WordKind::InputScalar || w->kind == WordKind::InputVector;
+      uses_.push_back({w->name, input, text_.substr(first, tokens_[close].offset - first), binding_, where(t.offset)});
+    }
+    const IndexBinding outer = binding_;
+    if (w->kind == WordKind::Sum)
+      binding_ = w->name == "sum_j" ? IndexBinding::SumJ
+                 : w->name == "sum_pairs" ? IndexBinding::SumPairs : IndexBinding::SumPairsLt;
     std::set<std::string> inner = bound;
     if (w->kind == WordKind::Sum) {
       const std::vector<std::string> binds = w->name == "sum_j" ? std::vector<std::string>{"j"}
@@ -240,12 +285,15 @@ class Scanner {
       break;
     }
     expect_close(i, open.text[0], open.offset);
+    binding_ = outer;
   }
 
   const std::string& text_;
   const ExpressionContext& context_;
   const PositionMap& positions_;
   std::vector<Token> tokens_;
+  IndexBinding binding_ = IndexBinding::None;
+  std::vector<RawIndexUse> uses_;
 };
 
 }  // namespace
@@ -262,7 +310,8 @@ PositionMap standalone_positions(const std::string& text) {
 
 ClaimExpression ClaimExpression::parse(const std::string& text, const ExpressionContext& context,
                                        const PositionMap& positions) {
-  Scanner(text, context, positions).run();
+  Scanner scanner(text, context, positions);
+  scanner.run();
   std::string ginac_text = text;
   for (char& ch : ginac_text) {
     if (ch == '[') ch = '(';
@@ -279,6 +328,17 @@ ClaimExpression ClaimExpression::parse(const std::string& text, const Expression
     throw InputError(context.file + ":" + std::to_string(line) + ":" + std::to_string(column), context.field,
                      std::string("GiNaC could not parse the expression: ") + x.what());
   }
+  e.field_ = context.field;
+  for (const auto& u : scanner.index_uses()) {
+    GiNaC::parser reader(atoms().symtab, /*strict=*/true, atoms().prototypes);
+    GiNaC::ex index;
+    try {
+      index = reader(u.index_text);
+    } catch (const std::exception& x) {
+      throw InputError(u.where, context.field, "cannot read the index of " + u.word + "[" + u.index_text + "]: " + x.what());
+    }
+    e.index_uses_.push_back({u.word, u.input_index, index, u.index_text, u.binding, u.where});
+  }
   return e;
 }
 
@@ -291,6 +351,46 @@ int code_of_symbol(const GiNaC::ex& e) {
   for (const auto& [code, s] : atoms().symbols)
     if (e.is_equal(s)) return code;
   return -1;
+}
+
+namespace {
+
+/// A text of e that does not depend on GiNaC's order of operands: sums and products list their
+/// operands' keys sorted.
+std::string canonical_key(const GiNaC::ex& e) {
+  using namespace GiNaC;
+  if (is_exactly_a<add>(e) || is_exactly_a<mul>(e)) {
+    std::vector<std::string> keys;
+    for (size_t i = 0; i < e.nops(); ++i) keys.push_back(canonical_key(e.op(i)));
+    std::sort(keys.begin(), keys.end());
+    std::string k = is_exactly_a<add>(e) ? "+(" : "*(";
+    for (const auto& x : keys) k += x + ",";
+    return k + ")";
+  }
+  if (e.nops() == 0) {
+    std::ostringstream o;
+    o << e;
+    return o.str();
+  }
+  std::string k = is_exactly_a<power>(e) ? "^(" : std::string(ex_to<basic>(e).class_name()) + "(";
+  for (size_t i = 0; i < e.nops(); ++i) k += canonical_key(e.op(i)) + ",";
+  return k + ")";
+}
+
+}  // namespace
+
+const std::vector<size_t>& canonical_order(const GiNaC::ex& e) {
+  // Claim expressions are few and small: one cached order per distinct node, on the one thread
+  // that uses GiNaC.
+  static std::unordered_map<GiNaC::ex, std::vector<size_t>, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> cache;
+  const auto it = cache.find(e);
+  if (it != cache.end()) return it->second;
+  std::vector<std::pair<std::string, size_t>> keyed;
+  for (size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(canonical_key(e.op(i)), i);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<size_t> order;
+  for (const auto& k : keyed) order.push_back(k.second);
+  return cache.emplace(e, std::move(order)).first->second;
 }
 
 int code_of_call(const GiNaC::ex& e) {

@@ -31,6 +31,7 @@ struct CheckClaimArgs {
   double ladder_seconds = 1.0;
   bool json = false;
   bool vocabulary = false;
+  bool strict = false;
 };
 
 void print_vocabulary(std::ostream& out) {
@@ -38,33 +39,56 @@ void print_vocabulary(std::ostream& out) {
     fmt::print(out, "{:24} {}\n", w.name + (w.arity == 0 ? "" : w.arity == 1 ? "[.]" : "(a, b)"), w.meaning);
 }
 
-/// No proof: the claim on `count` random exact polygons per n, judged in `arith`; a failure is a
-/// counterexample (in floating point too: `fails` means the exact sides differ, tracked.h).
+/// No symbolic form: the claim on `count` random exact polygons per n, judged in `arith`. Only
+/// evaluations that produced a comparison count towards holds_on_samples; undefined and
+/// inconclusive ones are counted apart, an evaluation error makes the result an error, and a
+/// failure is a counterexample (in floating point too: `fails` means the exact sides differ).
 void sample(GroundTruthEngine& engine, const DataClaim& c, int lo, int hi, const CheckClaimArgs& a, Arithmetic arith,
             ProofResult& r) {
   const std::vector<Claim> claim{to_claim(c)};
+  int inconclusive = 0;
   for (int n = std::max(lo, c.info.min_n); n <= hi && (c.info.max_n == 0 || n <= c.info.max_n); ++n)
     for (int i = 0; i < a.count; ++i) {
       const auto rc = generate_random_polygon(a.seed, n, i);
       const PolygonCheck check = check_polygon(engine, claim, "sample", rc.polygon, rc.rates, arith);
       const ClaimOutcome& o = check.claims.front();
       ++r.samples;
-      if (o.verdict == Verdict::Fails) {
-        CounterexampleSearch s;
-        s.n_min = std::max(lo, c.info.min_n);
-        s.n_max = n;
-        s.seed = a.seed;
-        r.counterexample = find_counterexample(engine, c, s);
-        if (!r.counterexample) {  // the random polygon itself, unshrunk
-          Counterexample cx{rc.polygon, rc.rates, o, r.samples, 0, 0, ""};
-          cx.scene_yaml = polygon_scene_to_yaml(PolygonScene{"counterexample-" + c.info.id, "", rc.polygon, rc.rates});
-          r.counterexample = cx;
+      switch (o.verdict) {
+        case Verdict::Holds: ++r.samples_compared; break;
+        case Verdict::Undefined: ++r.samples_undefined; break;
+        case Verdict::Inconclusive: ++inconclusive; break;
+        case Verdict::Error:
+          r.verdict = ProofVerdict::Error;
+          r.error = fmt::format("sample {} at n = {} (seed {}): the evaluation failed: {}", i, n, a.seed, o.error);
+          return;
+        case Verdict::Fails: {
+          CounterexampleSearch s;
+          s.n_min = std::max(lo, c.info.min_n);
+          s.n_max = n;
+          s.seed = a.seed;
+          r.counterexample = find_counterexample(engine, c, s);
+          if (!r.counterexample) {  // the random polygon itself, unshrunk
+            Counterexample cx{rc.polygon, rc.rates, o, r.samples, 0, 0, ""};
+            cx.scene_yaml = polygon_scene_to_yaml(PolygonScene{"counterexample-" + c.info.id, "", rc.polygon, rc.rates});
+            r.counterexample = cx;
+          }
+          r.verdict = ProofVerdict::Disproved;
+          return;
         }
-        r.verdict = ProofVerdict::Disproved;
-        return;
       }
     }
+  // K = the comparisons that really ran; fewer than --count of them supports no verdict.
+  if (r.samples_compared < a.count) {
+    r.verdict = ProofVerdict::Error;
+    r.error = fmt::format("only {} of {} samples produced a comparison ({} undefined, {} inconclusive): too few to "
+                          "say the claim holds",
+                          r.samples_compared, r.samples, r.samples_undefined, inconclusive);
+    return;
+  }
   r.verdict = ProofVerdict::HoldsOnSamples;
+  r.scope = fmt::format("{} exact random polygons compared, n = {}..{} ({} undefined, {} inconclusive)",
+                        r.samples_compared, std::max(lo, c.info.min_n),
+                        c.info.max_n ? std::min(hi, c.info.max_n) : hi, r.samples_undefined, inconclusive);
 }
 
 int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
@@ -82,7 +106,8 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     const PolygonScene scene = load_polygon_scene(a.scene);
     std::vector<Claim> claims;
     for (const auto& c : file.claims) claims.push_back(to_claim(c));
-    const PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, arith);
+    PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, arith);
+    check.strict = a.strict;
     if (a.json)
       out << to_json(check).dump(2) << "\n";
     else
@@ -102,16 +127,16 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     if (!a.n_range.empty() && lo == hi) o.only_n = lo;
     if (!a.n_range.empty() && lo != hi) o.n_max = hi;
     ProofResult r = prove_claim(engine, c, o);
-    // No proof and no counterexample from the symbolic route: random exact instances decide.
-    if (r.verdict == ProofVerdict::Error) {
+    // Only a claim with no symbolic form is sampled; any other error stays an error.
+    if (r.verdict == ProofVerdict::Error && !r.symbolic) {
       const std::string why = r.error;
       r.error.clear();
       sample(engine, c, lo, hi, a, arith, r);
-      if (r.verdict == ProofVerdict::HoldsOnSamples) r.error = "no proof: " + why;
+      if (r.verdict == ProofVerdict::HoldsOnSamples) r.argument.push_back("no proof: " + why);
     }
     results.push_back(std::move(r));
   }
-  return report_proofs(out, results, a.json);
+  return report_proofs(out, results, a.json, a.strict);
 }
 
 }  // namespace
@@ -131,6 +156,9 @@ void add_check_claim_command(CLI::App& app, Action& action) {
   c->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs per claim (default 1)");
   c->add_flag("--vocabulary", a.vocabulary, "print the names a claim may use");
   c->add_flag("--json", a.json, "print JSON");
+  c->add_flag("--strict", a.strict,
+              "only a proof for the claim's whole range is as expected for a true claim (proved_for and "
+              "holds_on_samples then exit 1; with --scene: undefined or inconclusive on a true claim fails)");
 }
 
 }  // namespace linkproof::cli

@@ -19,6 +19,7 @@ struct CheckArgs {
   std::string arith = "exact";
   bool json = false;
   bool no_terms = false;
+  bool strict = false;
 };
 
 // A mechanism scene (top-level `mechanism:`): the mechanism engine and the scene's catalogues.
@@ -35,8 +36,8 @@ int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   if (is_mechanism_scene_text(text)) return run_mechanism_check(a, arith, text, out);
   const PolygonScene scene = parse_polygon_scene(text, a.scene);
   GroundTruthEngine engine;
-  const PolygonCheck check =
-      check_polygon(engine, dijksman1966::catalogue(), scene.name, scene.polygon, scene.rates, arith);
+  PolygonCheck check = check_polygon(engine, dijksman1966::catalogue(), scene.name, scene.polygon, scene.rates, arith);
+  check.strict = a.strict;
   if (a.json)
     out << to_json(check).dump(2) << "\n";
   else
@@ -56,6 +57,8 @@ void add_check_command(CLI::App& app, Action& action) {
                 "(CLN long floats of 128, 192, 384, 3392 bits)");
   c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
   c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
+  c->add_flag("--strict", a.strict,
+              "undefined or inconclusive on a true claim is not as expected (exit 1): for CI (polygon scenes)");
 }
 
 }  // namespace linkproof::cli

@@ -1,4 +1,4 @@
-// linkproof prove [--claim ID] [--n N] [--file CLAIMS.yaml] [--ladder-seconds S] [--json]
+// linkproof prove [--claim ID] [--n N] [--file CLAIMS.yaml] [--ladder-seconds S] [--json] [--strict]
 #include <optional>
 
 #include "command.h"
@@ -16,6 +16,7 @@ struct ProveArgs {
   double ladder_seconds = 1.0;
   int n_max = 0;
   bool json = false;
+  bool strict = false;
 };
 
 int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
@@ -45,7 +46,7 @@ int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
     results.push_back(prove_claim(engine, *c, o));
   }
   if (results.empty()) throw InputError("<command line>", "--n", "no chosen claim applies to n = " + std::to_string(*a.n));
-  return report_proofs(out, results, a.json);
+  return report_proofs(out, results, a.json, a.strict);
 }
 
 }  // namespace
@@ -58,7 +59,10 @@ void add_prove_command(CLI::App& app, Action& action) {
   p->add_option("--file", a.file, "claim file (default: the bundled verify/claims/dijksman1966.yaml)");
   p->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs n = 4, 5, ... per claim (default 1)");
   p->add_option("--n-max", a.n_max, "stop the per-n ladder at this n");
-  p->add_flag("--json", a.json, "print JSON (the contract in README.md)");
+  p->add_flag("--json", a.json, "print JSON (the contract in docs/claims.md)");
+  p->add_flag("--strict", a.strict,
+              "only a proof for the claim's whole range is as expected for a true claim (proved_for and "
+              "holds_on_samples then exit 1): for CI");
 }
 
 }  // namespace linkproof::cli

@@ -7,6 +7,7 @@ namespace linkproof {
 std::string_view to_string(CountVerdict v) {
   switch (v) {
     case CountVerdict::Proved: return "proved";
+    case CountVerdict::HoldsOnSamples: return "holds_on_samples";
     case CountVerdict::Disproved: return "disproved";
     case CountVerdict::Error: return "error";
   }
@@ -50,7 +51,7 @@ CountClaim count_error(std::string id, std::string statement, std::string reason
 }
 
 int CountReport::exit_status() const {
-  return std::all_of(claims.begin(), claims.end(), [](const CountClaim& c) { return c.as_expected(); }) ? 0 : 1;
+  return std::all_of(claims.begin(), claims.end(), [this](const CountClaim& c) { return c.as_expected(strict); }) ? 0 : 1;
 }
 
 }  // namespace linkproof

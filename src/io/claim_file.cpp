@@ -4,6 +4,7 @@
 #include <charconv>
 #include <set>
 
+#include "linkproof/claims/claim_indices.h"
 #include "linkproof/core/error.h"
 #include "yaml_document.h"
 
@@ -174,6 +175,7 @@ class ClaimFileReader {
     c.reading = read_reading(n["reading"], where + ".reading");
     c.lhs = read_expression(n, "lhs", where, c.for_each_j);
     c.rhs = read_expression(n, "rhs", where, c.for_each_j);
+    for (const ClaimExpression* side : {&c.lhs, &c.rhs}) check_claim_indices(*side, c.info.min_n, c.info.max_n);
     return c;
   }
 

@@ -90,12 +90,15 @@ json to_json(const ClaimOutcome& c) { return claim_json(c); }
 json to_json(const PolygonCheck& check) {
   json claims = json::array();
   json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
-               {"unexpected_failures", 0}};
+               {"unexpected_failures", 0}, {"not_as_expected", 0}};
   for (const auto& c : check.claims) {
     claims.push_back(claim_json(c));
+    if (check.strict) claims.back()["as_expected"] = c.is_as_expected(true);
     summary[std::string(to_string(c.verdict))] = summary[std::string(to_string(c.verdict))].get<int>() + 1;
     if (c.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
+    if (!c.is_as_expected(check.strict)) summary["not_as_expected"] = summary["not_as_expected"].get<int>() + 1;
   }
+  if (check.strict) summary["strict"] = true;
   return {{"scene", check.scene},
           {"arithmetic", std::string(to_string(check.arithmetic))},
           {"polygon",

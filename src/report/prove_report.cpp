@@ -25,11 +25,11 @@ nlohmann::json to_json(const Counterexample& c) {
           {"seconds", c.seconds}};
 }
 
-nlohmann::json to_json(const ProofResult& r) {
+nlohmann::json to_json(const ProofResult& r, bool strict) {
   nlohmann::json j = {{"id", r.id},
                       {"expected", r.expected == Expectation::Holds ? "holds" : "fails"},
                       {"verdict", to_string(r.verdict)},
-                      {"as_expected", r.is_as_expected()},
+                      {"as_expected", r.is_as_expected(strict)},
                       {"scope", r.scope},
                       {"seconds", r.seconds}};
   nlohmann::json except = nlohmann::json::array();
@@ -37,36 +37,51 @@ nlohmann::json to_json(const ProofResult& r) {
   j["except"] = except;
   j["argument"] = r.argument;
   j["not_local"] = r.not_local;
+  j["proved_n"] = r.proved_n;
   nlohmann::json per_n = nlohmann::json::array();
   for (const auto& p : r.per_n)
     per_n.push_back({{"n", p.n}, {"proved", p.proved}, {"monomials", p.monomials}, {"tree_size", p.tree_size},
                      {"dag_size", p.dag_size}, {"seconds", p.seconds}, {"first_nonzero", p.first_nonzero}});
   j["per_n"] = per_n;
   if (r.counterexample) j["counterexample"] = to_json(*r.counterexample);
-  if (r.samples) j["samples"] = r.samples;
+  if (r.samples) {
+    j["samples"] = r.samples;
+    j["samples_compared"] = r.samples_compared;
+    j["samples_undefined"] = r.samples_undefined;
+  }
   if (!r.error.empty()) j["error"] = r.error;
   return j;
 }
 
-nlohmann::json to_json(const std::vector<ProofResult>& results) {
+nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict) {
   nlohmann::json claims = nlohmann::json::array();
+  nlohmann::json verdicts = nlohmann::json::object();
   int as_expected = 0;
   double seconds = 0;
   for (const auto& r : results) {
-    claims.push_back(to_json(r));
-    as_expected += r.is_as_expected();
+    claims.push_back(to_json(r, strict));
+    as_expected += r.is_as_expected(strict);
     seconds += r.seconds;
+    verdicts[to_string(r.verdict)] = verdicts.value(to_string(r.verdict), 0) + 1;
   }
   return {{"claims", claims},
           {"coordinates", kProofCoordinates},
-          {"summary", {{"claims", results.size()}, {"as_expected", as_expected}, {"seconds", seconds}}}};
+          {"summary",
+           {{"claims", results.size()},
+            {"as_expected", as_expected},
+            {"not_as_expected", static_cast<int>(results.size()) - as_expected},
+            {"verdicts", verdicts},
+            {"strict", strict},
+            {"seconds", seconds}}},
+          {"exit_status", exit_status(results, strict)}};
 }
 
-void write_text(std::ostream& out, const std::vector<ProofResult>& results) {
+void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool strict) {
   fmt::print(out, "coordinates: {}\n\n", kProofCoordinates);
   for (const auto& r : results) {
-    fmt::print(out, "{}  [{}]  {}{}  ({:.3f} s)\n", r.id, r.expected == Expectation::Holds ? "holds" : "fails",
-               to_string(r.verdict), r.scope.empty() ? "" : " for " + r.scope, r.seconds);
+    fmt::print(out, "{}  [{}]  {}{}  ({:.3f} s){}\n", r.id, r.expected == Expectation::Holds ? "holds" : "fails",
+               to_string(r.verdict), r.scope.empty() ? "" : " for " + r.scope, r.seconds,
+               r.is_as_expected(strict) ? "" : "  <-- NOT AS EXPECTED");
     if (!r.error.empty()) fmt::print(out, "  error: {}\n", r.error);
     for (const auto& a : r.argument) fmt::print(out, "  {}\n", a);
     if (!r.not_local.empty()) {
@@ -96,25 +111,26 @@ void write_text(std::ostream& out, const std::vector<ProofResult>& results) {
     out << "\n";
   }
   int ok = 0;
-  for (const auto& r : results) ok += r.is_as_expected();
-  fmt::print(out, "summary: {}/{} claims as expected\n", ok, results.size());
+  for (const auto& r : results) ok += r.is_as_expected(strict);
+  fmt::print(out, "summary: {}/{} claims as expected{}\n", ok, results.size(),
+             strict ? " (strict: only proofs for the whole range count)" : "");
 }
 
-int exit_status(const std::vector<ProofResult>& results) {
+int exit_status(const std::vector<ProofResult>& results, bool strict) {
   int status = 0;
   for (const auto& r : results) {
     if (r.verdict == ProofVerdict::Error) return 3;
-    if (!r.is_as_expected()) status = 1;
+    if (!r.is_as_expected(strict)) status = 1;
   }
   return status;
 }
 
-int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json) {
+int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict) {
   if (json)
-    out << to_json(results).dump(2) << "\n";
+    out << to_json(results, strict).dump(2) << "\n";
   else
-    write_text(out, results);
-  return exit_status(results);
+    write_text(out, results, strict);
+  return exit_status(results, strict);
 }
 
 }  // namespace linkproof

@@ -58,9 +58,10 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
   fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, readable(c.determinant));
 
   fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
-  int unexpected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
+  int unexpected = 0, not_as_expected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
   for (const auto& cl : c.claims) {
-    std::string mark = cl.is_as_expected() ? "" : "  <-- UNEXPECTED";
+    std::string mark = cl.is_as_expected(c.strict) ? "" : "  <-- UNEXPECTED";
+    not_as_expected += !cl.is_as_expected(c.strict);
     if (cl.info.expected == Expectation::Fails && cl.verdict == Verdict::Holds)
       mark = "  (this misreading coincides with the truth on this configuration)";
     fmt::print(out, "{:<34} {:<9} {:<13} {}{}\n", cl.info.id, to_string(cl.info.expected), to_string(cl.verdict),
@@ -93,8 +94,10 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
     fmt::print(out, "\n");
   }
   fmt::print(out, "\nverdict rule: {}\n", c.tolerance_rule);
-  fmt::print(out, "summary: {}/{} true claims hold, {}/{} erratum readings fail here, {} unexpected failure(s)\n",
-             true_held, true_total, erratum_failed, erratum_total, unexpected);
+  fmt::print(out, "summary: {}/{} true claims hold, {}/{} erratum readings fail here, {} unexpected failure(s), {} not as "
+             "expected{}\n",
+             true_held, true_total, erratum_failed, erratum_total, unexpected, not_as_expected,
+             c.strict ? " (strict: undefined or inconclusive on a true claim counts)" : "");
 }
 
 void write_text(std::ostream& out, const SweepReport& s) {

@@ -45,6 +45,9 @@ TEST(ClaimFile, ParseErrorInAFoldedScalarPointsAtItsOwnLine) {
 TEST(ClaimFile, StructuralErrorsAreNamed) {
   EXPECT_NE(error_of(std::string(kHeader) + "    rhs: sum_j(omega[j\n").find("never closed"), std::string::npos);
   EXPECT_NE(error_of(std::string(kHeader) + "    rhs: 0.5*omega_dot_out\n").find("decimal"), std::string::npos);
+  // The number is quoted as written (it used to print '0....').
+  EXPECT_NE(error_of(std::string(kHeader) + "    rhs: 0.5*omega_dot_out\n").find("'0.5' is a decimal"), std::string::npos);
+  EXPECT_NE(error_of(std::string(kHeader) + "    rhs: 2e-3*omega_dot_out\n").find("'2e-3' is a decimal"), std::string::npos);
   EXPECT_NE(error_of(std::string(kHeader) + "    rhs: omega_dot_out * * 2\n").find("operand is missing"), std::string::npos);
   EXPECT_NE(error_of(std::string(kHeader) + "    rhs: i_out\n").find("needs an index"), std::string::npos);
   EXPECT_NE(error_of(std::string(kHeader) + "    rhs: dot(r[1])\n").find("takes 2 argument"), std::string::npos);

@@ -66,21 +66,42 @@ std::vector<CountClaim> count_claims_for_n(int n, std::uint64_t seed) {
   const Family families[] = {{"velocity_rank2", "the 2n velocity relations (5), (6)"},
                              {"eq22_rank2", "the n acceleration relations (22)"},
                              {"acceleration_rank2", "the 2n acceleration relations (22) and companion"}};
+  // These ranks depend on the geometry: each is computed exactly on kRankSamples polygons (seeds
+  // seed, seed+1, ...). Equal to 2 on each, the generic rank is at least 2 (a minor that is
+  // nonzero somewhere is nonzero generically), but that is not a proof for every polygon:
+  // holds_on_samples, never proved.
+  constexpr int kRankSamples = 2;
   try {
-    const CountingPolygon poly = counting_polygon(n, seed);
-    const std::vector<FixedSideFamily> fams = count_fixed_side_relations(poly.polygon, poly.omega);
-    for (size_t k = 0; k < fams.size(); ++k) {
-      const FixedSideFamily& f = fams[k];
-      CountClaim c = judge_rank(
-          std::string("dijksman1966.A7.") + families[k].id + at,
-          fmt::format("over all {} choices of the fixed side, {} of an {}-side polygon have rank 2 modulo the "
-                      "triangle relations, and are consistent ({}; polygon: {})",
-                      n, families[k].what, n, kSource, poly.origin),
-          2, f.rank_over_triangles(), f.augmented_rank_over_triangles(), f.combined);
-      c.reason = fmt::format("{} relations; rank[triangles; family] - rank[triangles] = {} - {} = {}; augmented {} - {} = {}",
-                             f.relations, f.combined.rank, f.triangles.rank, f.rank_over_triangles(),
-                             f.combined.augmented_rank, f.triangles.augmented_rank,
-                             f.augmented_rank_over_triangles());
+    std::vector<CountClaim> claims;
+    for (int sample = 0; sample < kRankSamples; ++sample) {
+      const CountingPolygon poly = counting_polygon(n, seed + static_cast<std::uint64_t>(sample));
+      const std::vector<FixedSideFamily> fams = count_fixed_side_relations(poly.polygon, poly.omega);
+      for (size_t k = 0; k < fams.size(); ++k) {
+        const FixedSideFamily& f = fams[k];
+        CountClaim c = judge_rank(
+            std::string("dijksman1966.A7.") + families[k].id + at,
+            fmt::format("over all {} choices of the fixed side, {} of an {}-side polygon have rank 2 modulo the "
+                        "triangle relations, and are consistent ({}; polygon: {})",
+                        n, families[k].what, n, kSource, poly.origin),
+            2, f.rank_over_triangles(), f.augmented_rank_over_triangles(), f.combined);
+        c.reason = fmt::format("{} relations; rank[triangles; family] - rank[triangles] = {} - {} = {}; augmented {} - {} = {}",
+                               f.relations, f.combined.rank, f.triangles.rank, f.rank_over_triangles(),
+                               f.combined.augmented_rank, f.triangles.augmented_rank,
+                               f.augmented_rank_over_triangles());
+        if (sample == 0) {
+          claims.push_back(std::move(c));
+        } else if (claims[k].verdict == CountVerdict::Proved && c.verdict != CountVerdict::Proved) {
+          claims[k] = std::move(c);  // the first sample that disagrees is the evidence
+        }
+      }
+    }
+    for (CountClaim& c : claims) {
+      if (c.verdict == CountVerdict::Proved) {
+        c.verdict = CountVerdict::HoldsOnSamples;
+        c.samples = kRankSamples;
+        c.reason += fmt::format(" (exact on {} polygons, seeds {}..{}: the rank depends on the geometry)", kRankSamples,
+                                seed, seed + kRankSamples - 1);
+      }
       out.push_back(std::move(c));
     }
   } catch (const UndefinedQuantity& e) {

@@ -30,8 +30,9 @@ struct ClaimOutcome {
   std::string error;  ///< set when the evaluation itself threw (verdict Error)
 
   /// True if this outcome is what the claim is expected to do, or says nothing against it
-  /// (undefined/inconclusive). An erratum reading that happens to hold here is not a failure.
-  bool is_as_expected() const;
+  /// (undefined/inconclusive; with `strict` these are not as expected for a true claim). An
+  /// erratum reading that happens to hold here is not a failure. Error never is as expected.
+  bool is_as_expected(bool strict = false) const;
   /// Verdict Undefined, naming the quantity that does not exist and why.
   void mark_undefined(const UndefinedQuantity& u) {
     verdict = Verdict::Undefined;
@@ -57,6 +58,8 @@ struct PolygonCheck {
   std::vector<ClaimOutcome> claims;
   std::vector<std::string> not_applicable;  ///< ids of claims that do not apply to this n
   std::string tolerance_rule;
+  /// --strict: undefined or inconclusive on a true claim is not as expected (exit 1).
+  bool strict = false;
 };
 
 /// Evaluates every applicable claim of `catalogue` on the polygon in arithmetic `a`.
@@ -69,10 +72,12 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
 template <class T>
 ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context);
 
-/// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim's evaluation errored.
+/// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
+/// claim's evaluation errored.
 int exit_status(const PolygonCheck& check);
-/// The CLI's exit code of a list of outcomes: 3 if any verdict is Error, else 1 if a true claim
-/// fails, else 0. Shared by polygon and mechanism checks.
-int exit_status(const std::vector<ClaimOutcome>& outcomes);
+/// The CLI's exit code of a list of outcomes: 3 if any verdict is Error, else 1 if one is not as
+/// expected (a true claim fails; with `strict` also undefined/inconclusive), else 0. Shared by
+/// polygon and mechanism checks.
+int exit_status(const std::vector<ClaimOutcome>& outcomes, bool strict = false);
 
 }  // namespace linkproof

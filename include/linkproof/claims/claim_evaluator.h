@@ -55,6 +55,10 @@ class ClaimEvaluator {
   /// Where the expression is not local (see above); empty if it is.
   const std::vector<std::string>& locality_violations() const { return violations_; }
 
+  /// Every quantity the expression itself divided by (a proof lists where they vanish: the
+  /// expression may cancel them, D/D = 1, and still be undefined where they are 0).
+  const std::vector<T>& divisors() const { return divisors_; }
+
   /// Partial evaluation: a term of a sum whose input j makes a quantity undefined (Q_j at
   /// infinity, ...) is left out and j recorded here, instead of making the whole value
   /// undefined. In a local expression that term contributes only to monomials with a rate of
@@ -101,9 +105,10 @@ class ClaimEvaluator {
       return Value::number(constant(from_rational<T>(cln::the<cln::cl_RA>(q.to_cl_N()))));
     }
     if (is_exactly_a<add>(e)) {
-      Value sum = value(e.op(0), b);
+      const std::vector<size_t>& order = claim_atoms::canonical_order(e);  // the same in every run
+      Value sum = value(e.op(order[0]), b);
       for (size_t i = 1; i < e.nops(); ++i) {
-        Value t = value(e.op(i), b);
+        Value t = value(e.op(order[i]), b);
         if (t.is_vector != sum.is_vector) throw error("a number added to a vector in " + text(e));
         if (sum.is_vector) {
           sum.x = sum.x + t.x;
@@ -115,8 +120,9 @@ class ClaimEvaluator {
       return sum;
     }
     if (is_exactly_a<mul>(e)) {
-      Value p = value(e.op(0), b);
-      for (size_t i = 1; i < e.nops(); ++i) p = multiply(p, value(e.op(i), b), e);
+      const std::vector<size_t>& order = claim_atoms::canonical_order(e);
+      Value p = value(e.op(order[0]), b);
+      for (size_t i = 1; i < e.nops(); ++i) p = multiply(p, value(e.op(order[i]), b), e);
       return p;
     }
     if (is_exactly_a<power>(e)) {
@@ -128,7 +134,10 @@ class ClaimEvaluator {
       if (base.is_vector) throw error("power of a vector: " + text(e) + " (use norm2 or dot)");
       RatePoly<T> r = constant(1);
       for (int i = 0; i < std::abs(p); ++i) r = r * base.s;
-      return Value::number(p >= 0 ? r : constant(1) / r);
+      if (p >= 0) return Value::number(r);
+      RatePoly<T> q = constant(1) / r;  // tests r for zero
+      divisors_.push_back(r.constant());
+      return Value::number(std::move(q));
     }
     if (const int code = claim_atoms::code_of_symbol(e); code >= 0) return global(vocabulary()[static_cast<size_t>(code)], b);
     if (const int code = claim_atoms::code_of_call(e); code >= 0) return call(vocabulary()[static_cast<size_t>(code)], e, b);
@@ -382,6 +391,7 @@ class ClaimEvaluator {
   const PolygonContext<T>& c_;
   ClaimReading reading_;
   std::vector<std::string> violations_;
+  std::vector<T> divisors_;
   bool partial_ = false;
   std::map<std::vector<int>, Undefined> undefined_inputs_;
 };

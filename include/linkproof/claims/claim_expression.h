@@ -14,6 +14,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace linkproof {
 
@@ -29,6 +30,19 @@ struct ExpressionContext {
   bool j_is_free = false;             ///< `for_each: j`: j may be used outside sums
 };
 
+/// Which sum binds the index symbols at a place in an expression (the scanner knows it).
+enum class IndexBinding { None, ForEachJ, SumJ, SumPairs, SumPairsLt };
+
+/// One indexed word in an expression, as written: `omega[j]`, `r[n-1]`, `K[2]`.
+struct IndexUse {
+  std::string word;          ///< the vocabulary word, e.g. "omega"
+  bool input_index = false;  ///< 1..n-3 (an input j) rather than 1..n (a side or joint)
+  GiNaC::ex index;           ///< the index expression, in the symbols n, j, l
+  std::string index_text;    ///< as written
+  IndexBinding binding = IndexBinding::None;
+  std::string where;         ///< "FILE:LINE:COLUMN" of the word
+};
+
 class ClaimExpression {
  public:
   /// Checks and parses `text`; throws InputError naming file:line:column, the field and the problem.
@@ -40,10 +54,15 @@ class ClaimExpression {
 
   const std::string& text() const { return text_; }
   const GiNaC::ex& expression() const { return expression_; }
+  /// Every indexed word, for the range checks of claim_indices.h.
+  const std::vector<IndexUse>& index_uses() const { return index_uses_; }
+  const std::string& field() const { return field_; }
 
  private:
   std::string text_;
   GiNaC::ex expression_;
+  std::vector<IndexUse> index_uses_;
+  std::string field_;
 };
 
 /// The GiNaC atoms of the vocabulary (one table, so that symbols keep their identity).
@@ -54,6 +73,10 @@ const GiNaC::symbol& symbol_of(int word_code);
 int code_of_symbol(const GiNaC::ex& e);
 /// If e is a call of a vocabulary word: its code and arguments; else code -1.
 int code_of_call(const GiNaC::ex& e);
+/// The operands of a sum or product in an order that does not depend on the run. GiNaC orders
+/// them by hash values that depend on addresses (ASLR), so summing in GiNaC's order made
+/// floating-point results and bounds differ between runs of the same program.
+const std::vector<size_t>& canonical_order(const GiNaC::ex& e);
 }  // namespace claim_atoms
 
 }  // namespace linkproof

@@ -104,6 +104,10 @@ class RatePoly {
     if (!b.is_constant())
       throw InputError("<claim>", "expression", "division by an expression that contains rates: not a polynomial in the rates");
     const T d = b.constant();
+    // Tested like every divisor of the construction: exactly (a symbolic proof records it in
+    // its exceptional set; an exact check reports the claim undefined where it vanishes).
+    if (linkproof::is_zero(d))
+      throw UndefinedQuantity("a divisor in the claim's expression", "it is zero at this configuration");
     for (auto& [m, c] : a.terms_) c = c / d;
     return a;
   }

@@ -1,9 +1,14 @@
 // The outcome of a counting claim (a rank, a balance, a solved value), with its evidence.
 //
 // Counting claims are statements about exact integers and rationals, so there is no tolerance:
-//  proved     the computed value equals the stated one exactly (a rank statement holds);
-//  disproved  it does not; `observed` holds what was computed (e.g. the observed rank);
-//  error      the count could not be made (a dead centre, an undetermined velocity, ...).
+//  proved            the computed value equals the stated one exactly, and the computation
+//                    covers every case the claim states (a rank of relations with constant
+//                    coefficients, or of one stated configuration such as the Fig. 5 eight-bar);
+//  holds_on_samples  a rank whose relations depend on the geometry, computed exactly on
+//                    `samples` polygons and equal to the stated one on each: the generic rank is
+//                    at least that, but no argument covers every configuration;
+//  disproved         it does not; `observed` holds what was computed (e.g. the observed rank);
+//  error             the count could not be made (a dead centre, an undetermined velocity, ...).
 // An erratum reading of the paper is stated with `expected = Disproved`.
 #pragma once
 
@@ -16,9 +21,9 @@
 
 namespace linkproof {
 
-enum class CountVerdict { Proved, Disproved, Error };
+enum class CountVerdict { Proved, HoldsOnSamples, Disproved, Error };
 
-/// "proved", "disproved", "error" (the JSON spelling).
+/// "proved", "holds_on_samples", "disproved", "error" (the JSON spelling).
 std::string_view to_string(CountVerdict v);
 
 struct CountClaim {
@@ -30,7 +35,12 @@ struct CountClaim {
   std::string observed_value;      ///< the computed value; empty on error
   std::string reason;              ///< why: the error, or what was compared
   std::optional<RankResult> rank;  ///< sizes, ranks and time when the claim is a rank
-  bool as_expected() const { return verdict == expected; }
+  int samples = 0;                 ///< holds_on_samples: the exact polygons it rests on
+  /// The expected verdict; a stated "proved" is also met by holds_on_samples unless strict.
+  bool as_expected(bool strict = false) const {
+    return verdict == expected ||
+           (!strict && expected == CountVerdict::Proved && verdict == CountVerdict::HoldsOnSamples);
+  }
 };
 
 /// Judges "the family has rank `expected_rank` and is consistent" against a computed rank.
@@ -51,6 +61,7 @@ struct CountReport {
   std::string subject;              ///< "n = 3..60", "eight-bar of Fig. 5", ...
   std::vector<CountClaim> claims;
   std::vector<std::string> notes;   ///< statements for the reader (e.g. the A5.5 erratum)
+  bool strict = false;              ///< --strict: holds_on_samples is not as expected
   /// 0 every claim as expected, 1 otherwise.
   int exit_status() const;
 };

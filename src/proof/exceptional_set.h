@@ -1,0 +1,27 @@
+// The exceptional set of a symbolic proof: the factors of every divisor that the compared
+// expressions contain, each named where it matches a degeneracy of SPEC A6. Private to src/proof.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <vector>
+
+#include "linkproof/claims/polygon_context.h"
+#include "linkproof/proof/prove.h"
+#include "symbolic_polygon.h"
+
+namespace linkproof::proof_detail {
+
+/// Every divisor in the expressions as built, before any simplification: the bases of negative
+/// powers, found by walking each expression once (shared subexpressions visited once). normal()
+/// would cancel some of them (x/x = 1); that is why they are read off the unsimplified trees.
+std::vector<GiNaC::ex> divisors_in(const std::vector<GiNaC::ex>& expressions);
+
+/// The irreducible factors of the divisors' numerators (up to constants, each once), named with
+/// the sides as `names` prints them. With `l_as_j` (the base of a proof for every n, where input
+/// 2 stands for any l and input 1 for any j), a factor about input l is the same family as the
+/// one about j: it is printed with l's symbols replaced by j's and kept once.
+std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<GiNaC::ex>& c, const std::vector<GiNaC::ex>& divisors,
+                                             const SideNames& names, const GiNaC::exmap* l_as_j);
+
+}  // namespace linkproof::proof_detail
