@@ -81,6 +81,8 @@ void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMoti
   }
 }
 
+}  // namespace
+
 ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx) {
   ClaimOutcome out;
   out.info = claim.info;
@@ -103,8 +105,6 @@ ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismCon
   }
   return out;
 }
-
-}  // namespace
 
 MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& s) {
   const MechanismClosure closure(s.linkage);

@@ -95,6 +95,10 @@ MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<Me
 /// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim errored.
 int exit_status(const MechanismCheck& check);
 
+/// Runs one claim: its comparisons judged exactly; an UndefinedQuantity thrown by the claim
+/// gives `undefined`, any other exception `error`.
+ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx);
+
 /// The built-in claims (routes_agree, driver_inversion).
 std::vector<MechanismClaim> builtin_mechanism_claims();
 

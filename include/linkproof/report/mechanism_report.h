@@ -26,6 +26,10 @@
 namespace linkproof {
 
 nlohmann::json to_json(const MechanismCheck& check);
+/// {"holds": n, "fails": n, "undefined": n, "inconclusive": n, "error": n, "unexpected_failures": n}
+nlohmann::json claims_summary_json(const std::vector<ClaimOutcome>& claims);
+/// The text table of claims: id, verdict, expected, headline evidence.
+void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims);
 void write_text(std::ostream& out, const MechanismCheck& check);
 
 }  // namespace linkproof
