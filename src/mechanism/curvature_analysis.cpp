@@ -122,13 +122,7 @@ CurvatureCheck check_curvature(const MechanismScene& s, const std::vector<Mechan
   const MechanismContext ctx{s, truth};
   std::vector<MechanismClaim> all = curvature_claims(r.analysis);
   for (const MechanismCatalogue& cat : catalogues) all.insert(all.end(), cat.claims.begin(), cat.claims.end());
-  for (const MechanismClaim& c : all) {
-    if (c.applies && !c.applies(ctx)) {
-      r.not_applicable.push_back(c.info.id);
-      continue;
-    }
-    r.claims.push_back(run_mechanism_claim(c, ctx));
-  }
+  run_mechanism_claims(all, ctx, r.claims, r.not_applicable);
   return r;
 }
 

@@ -45,6 +45,14 @@ std::vector<BarView> all_bars(const Linkage& g) {
   return out;
 }
 
+// f(bar, field of its near link, field of its far link) for every bar seen from both ends.
+template <class F>
+void for_each_bar(const MechanismContext& c, F f) {
+  const auto fields = link_fields(c.scene.linkage, c.truth.motion);
+  for (const BarView& b : all_bars(c.scene.linkage))
+    f(b, fields[static_cast<size_t>(b.moving)], fields[static_cast<size_t>(b.fixed)]);
+}
+
 std::string motion_name(const Linkage& g, int m, int f) { return g.link_name(m) + "/" + g.link_name(f); }
 
 MechanismClaim make(std::string id, std::string source, std::string statement, Expectation e,
@@ -101,16 +109,14 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
       [](const MechanismContext& c) {
         ClaimSides<Rational> s;
         const Linkage& g = c.scene.linkage;
-        const auto fields = link_fields(g, c.truth.motion);
-        for (const BarView& b : all_bars(g)) {
+        for_each_bar(c, [&](const BarView& b, const LinkField<Rational>& fm, const LinkField<Rational>& ff) {
           const Vec2<Rational> N = g.joint(b.ends.near_joint).at;
-          const PP centre = construct_curvature_centre(
-              N, relative_point_motion(fields[static_cast<size_t>(b.moving)], fields[static_cast<size_t>(b.fixed)], N),
-              "centre of " + g.joint(b.ends.near_joint).name);
+          const PP centre = construct_curvature_centre(N, relative_point_motion(fm, ff, N),
+                                                       "centre of " + g.joint(b.ends.near_joint).name);
           compare_points(s, fmt::format("bar {}: {} in {}", g.link_name(b.bar), g.joint(b.ends.near_joint).name,
                                         motion_name(g, b.moving, b.fixed)),
                          centre, "centre", PP::finite(g.joint(b.ends.far_joint).at), g.joint(b.ends.far_joint).name);
-        }
+        });
         return s;
       },
       [](const MechanismContext& c) { return !all_bars(c.scene.linkage).empty(); }));
@@ -123,16 +129,14 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
       [](const MechanismContext& c) {
         ClaimSides<Rational> s;
         const Linkage& g = c.scene.linkage;
-        const auto fields = link_fields(g, c.truth.motion);
-        for (const BarView& b : all_bars(g)) {
-          const auto circle = construct_inflection_circle(fields[static_cast<size_t>(b.moving)],
-                                                          fields[static_cast<size_t>(b.fixed)], "pole");
+        for_each_bar(c, [&](const BarView& b, const LinkField<Rational>& fm, const LinkField<Rational>& ff) {
+          const auto circle = construct_inflection_circle(fm, ff, "pole");
           const Vec2<Rational> N = g.joint(b.ends.near_joint).at, F = g.joint(b.ends.far_joint).at;
           const auto es = euler_savary_sides(circle, F - N, N, PP::finite(F));
           const std::string label = fmt::format("bar {} in {}", g.link_name(b.bar), motion_name(g, b.moving, b.fixed));
           s.instances.push_back(Cmp{label, maybe(es.lhs, "1/(P S_a) - 1/(P S_b)", "a joint is at the pole"),
                                     maybe(es.rhs, "1/(delta sin theta)", "pole at infinity or the bar along the pole tangent")});
-        }
+        });
         return s;
       },
       [](const MechanismContext& c) { return !all_bars(c.scene.linkage).empty(); }));

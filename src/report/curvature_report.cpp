@@ -147,13 +147,7 @@ void write_curvature_text(std::ostream& out, const CurvatureAnalysis& a, const s
 void write_text(std::ostream& out, const CurvatureCheck& c) {
   fmt::print(out, "scene {} (exact arithmetic)\n", c.scene);
   write_curvature_text(out, *c.analysis, c.link_names);
-  write_claim_table(out, c.claims);
-  if (!c.not_applicable.empty()) {
-    fmt::print(out, "\nnot applicable:");
-    for (const auto& id : c.not_applicable) fmt::print(out, " {}", id);
-    fmt::print(out, "\n");
-  }
-  fmt::print(out, "\nexit status {}\n", exit_status(c));
+  write_claim_section(out, c.claims, c.not_applicable);
 }
 
 }  // namespace linkproof

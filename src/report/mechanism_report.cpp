@@ -44,6 +44,17 @@ void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claim
   }
 }
 
+void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
+                         const std::vector<std::string>& not_applicable) {
+  write_claim_table(out, claims);
+  if (!not_applicable.empty()) {
+    fmt::print(out, "\nnot applicable:");
+    for (const auto& id : not_applicable) fmt::print(out, " {}", id);
+    fmt::print(out, "\n");
+  }
+  fmt::print(out, "\nexit status {}\n", exit_status(claims));
+}
+
 json to_json(const MechanismCheck& c) {
   json links = json::object(), relative = json::object(), joints = json::object(), points = json::object(),
        tables = json::object(), claims = json::array();
@@ -97,13 +108,7 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
     fmt::print(out, "\n{}\n", t.title);
     for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);
   }
-  write_claim_table(out, c.claims);
-  if (!c.not_applicable.empty()) {
-    fmt::print(out, "\nnot applicable:");
-    for (const auto& id : c.not_applicable) fmt::print(out, " {}", id);
-    fmt::print(out, "\n");
-  }
-  fmt::print(out, "\nexit status {}\n", exit_status(c));
+  write_claim_section(out, c.claims, c.not_applicable);
 }
 
 }  // namespace linkproof

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <sstream>
 
 #include "support/cli_run.h"
 
@@ -89,19 +90,13 @@ TEST(CurvatureCli, CheckRunsTheSameWorkWhenTheSceneAsks) {
   EXPECT_EQ(j["exit_status"], 0);
 }
 
+// The bundled seed-001 four-bar with `extra` appended (top-level keys).
 std::string write_scene(const std::string& name, const std::string& extra) {
+  std::ifstream in(scene("seed001_fourbar.yaml"));
+  std::stringstream text;
+  text << in.rdbuf();
   const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << R"(name: t
-mechanism:
-  ground: "1"
-  joints:
-    - {name: O2, type: revolute, links: ["1", "2"], at: [0, 0]}
-    - {name: A,  type: revolute, links: ["2", "3"], at: [3, 4]}
-    - {name: B,  type: revolute, links: ["3", "4"], at: [11, 10]}
-    - {name: O4, type: revolute, links: ["4", "1"], at: [11, 0]}
-  inputs:
-    - {link: "2", omega: 2, omega_dot: 5}
-)" << extra;
+  std::ofstream(path) << text.str() << extra;
   return path;
 }
 

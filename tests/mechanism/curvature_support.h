@@ -3,7 +3,7 @@
 
 #include <rapidcheck.h>
 
-#include "linkproof/mechanism/mechanism_scene.h"
+#include "linkproof/mechanism/mechanism_check.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof::testing {
@@ -36,6 +36,18 @@ inline MechanismScene random_scene(const Topology& t) {
   const Rational w = *small_rational(3), wd = *small_rational(3);
   RC_PRE(!cln::zerop(w));
   return make_scene(t, at, w, wd);
+}
+
+/// The exact solution of a random scene; discards singular draws (locked, dead centre).
+inline MechanismSolution<Rational> solve_or_discard(const MechanismScene& s) {
+  MechanismSolution<Rational> truth;
+  try {
+    truth = solve_mechanism_exact(s);
+  } catch (const InputError&) {
+    RC_DISCARD("a singular random configuration");
+  }
+  RC_PRE(truth.mobility == 1);
+  return truth;
 }
 
 }  // namespace linkproof::testing

@@ -98,6 +98,10 @@ int exit_status(const MechanismCheck& check);
 /// Runs one claim: its comparisons judged exactly; an UndefinedQuantity thrown by the claim
 /// gives `undefined`, any other exception `error`.
 ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx);
+/// Runs every claim that applies (appended to `outcomes`); the ids of the others are appended to
+/// `not_applicable`.
+void run_mechanism_claims(const std::vector<MechanismClaim>& claims, const MechanismContext& ctx,
+                          std::vector<ClaimOutcome>& outcomes, std::vector<std::string>& not_applicable);
 
 /// The built-in claims (routes_agree, driver_inversion).
 std::vector<MechanismClaim> builtin_mechanism_claims();
