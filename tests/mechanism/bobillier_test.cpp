@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <random>
+
 #include "linkproof/mechanism/curvature_analysis.h"
 #include "mechanism/curvature_support.h"
 
@@ -35,16 +37,35 @@ RC_GTEST_PROP(Bobillier, GivesTheAnalyticCentreOfARandomCouplerPoint, ()) {
   RC_ASSERT(b.gamma.at.y == analytic.at.y);
 }
 
-RC_GTEST_PROP(Bobillier, MirroredStepCMissesTheCentre, ()) {
-  const FourBarCase c = random_fourbar();
-  const Vec2<Rational> C = *testing::small_point(10);
-  const PP analytic = construct_curvature_centre(C, relative_point_motion(c.fields[2], c.fields[0], C), "centre");
-  const auto right = construct_bobillier(c.A, c.O2, c.B, c.O4, C);
-  const auto mirrored = construct_bobillier(c.A, c.O2, c.B, c.O4, C, true);
-  RC_PRE(analytic.is_finite() && right.gamma.is_finite() && mirrored.gamma.is_finite());
-  // The two readings agree only where the angle of step (c) is 0 or 180 degrees.
-  RC_PRE(!cln::zerop(cross(c.B - right.P.at, right.Q_AB.at - right.P.at)));
-  RC_ASSERT(!(mirrored.gamma.at.x == analytic.at.x && mirrored.gamma.at.y == analytic.at.y));
+// The mirrored reading of step (c) is wrong generically, not everywhere: it coincides with the
+// centre on special positions (found by RapidCheck, e.g. O2 (-6,-6), A (-7,-4), B (-6,-4),
+// O4 (-2,-8), C (-10,-10); not characterised). So this counts, over a fixed printed seed, how
+// often it misses: in all but a small fraction of random four-bars.
+TEST(Bobillier, MirroredStepCMissesTheCentreInAlmostEveryRandomFourBar) {
+  const unsigned seed = 20261124;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coord(-40, 40);
+  const auto point = [&] { return Vec2<Rational>{Rational(coord(rng)) / 4, Rational(coord(rng)) / 4}; };
+  int compared = 0, missed = 0;
+  while (compared < 200) {
+    MechanismScene s = testing::make_scene(testing::fourbar_topology(), {point(), point(), point(), point()}, 2, 1);
+    MechanismSolution<Rational> truth;
+    try {
+      truth = solve_rigid_body(s.linkage, s.inputs, s.source);
+    } catch (const InputError&) {
+      continue;
+    }
+    const auto fields = link_fields(s.linkage, truth.motion);
+    const auto& g = s.linkage;
+    const Vec2<Rational> C = point();
+    const PP analytic = construct_curvature_centre(C, relative_point_motion(fields[2], fields[0], C), "centre");
+    const auto mirrored = construct_bobillier(g.joint(1).at, g.joint(0).at, g.joint(2).at, g.joint(3).at, C, true);
+    if (!analytic.is_finite() || !mirrored.gamma.is_finite()) continue;
+    ++compared;
+    if (!(mirrored.gamma.at.x == analytic.at.x && mirrored.gamma.at.y == analytic.at.y)) ++missed;
+  }
+  EXPECT_GE(missed, 190) << "seed " << seed << ": the mirrored reading hit the centre in " << compared - missed
+                         << " of " << compared << " random four-bars";
 }
 
 TEST(Bobillier, PointOnThePoleRayPAUsesTheBVersion) {

@@ -11,8 +11,9 @@ namespace linkproof::testing {
 
 /// A rational in [-range, range] with denominator 1..4.
 inline rc::Gen<Rational> small_rational(int range) {
-  return rc::gen::map(rc::gen::pair(rc::gen::inRange(-4 * range, 4 * range + 1), rc::gen::inRange(1, 5)),
-                      [](const std::pair<int, int>& p) { return Rational(p.first) / Rational(p.second); });
+  return rc::gen::mapcat(rc::gen::inRange(1, 5), [range](int d) {
+    return rc::gen::map(rc::gen::inRange(-range * d, range * d + 1), [d](int n) { return Rational(n) / Rational(d); });
+  });
 }
 
 inline rc::Gen<Vec2<Rational>> small_point(int range) {

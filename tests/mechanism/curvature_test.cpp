@@ -69,11 +69,18 @@ TEST(Curvature, CoriolisTermIsNeededWhenTheReferenceLinkMoves) {
 // Random four-bars and eight-bars: every claim of the analysis has its expected verdict.
 void expect_claims_as_expected(const MechanismScene& s) {
   const MechanismSolution<Rational> truth = testing::solve_or_discard(s);
+  for (const LinkageJoint& j : s.linkage.joints())  // printed on failure: the configuration, exact
+    RC_LOG() << j.name << " (" << format_rational(j.at.x) << ", " << format_rational(j.at.y) << ")\n";
+  RC_LOG() << "input " << format_rational(s.inputs[0].rate) << ", " << format_rational(s.inputs[0].rate_dot) << "\n";
   const auto a = std::make_shared<const CurvatureAnalysis>(analyse_curvature(s, truth));
+  // Two links without relative motion (a degenerate draw) leave a pole undefined.
+  for (const PoleEntry& p : a->poles) RC_PRE(p.pole.kind != PP::Kind::Undefined);
   const MechanismContext ctx{s, truth};
   for (const MechanismClaim& c : curvature_claims(a)) {
     if (c.applies && !c.applies(ctx)) continue;
     const ClaimOutcome o = run_mechanism_claim(c, ctx);
+    RC_LOG() << c.info.id << ": " << to_string(o.verdict) << " " << o.headline.label << " " << o.headline.undefined_quantity
+             << " " << o.headline.reason << "\n";
     if (c.info.id == "curvature.aronhold_kennedy" || c.info.id == "curvature.joint_poles") {
       RC_ASSERT(o.verdict == Verdict::Holds);
     }
