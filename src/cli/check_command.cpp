@@ -5,6 +5,7 @@
 #include "linkproof/check/check.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/scene.h"
+#include "linkproof/report/curvature_report.h"
 #include "linkproof/report/mechanism_report.h"
 #include "mechanism_catalogues.h"
 #include "linkproof/report/json_report.h"
@@ -25,8 +26,22 @@ struct CheckArgs {
 // A mechanism scene (top-level `mechanism:`): the mechanism engine and the scene's catalogues.
 int run_mechanism_check(const CheckArgs& a, Arithmetic arith, const std::string& text, std::ostream& out) {
   const MechanismScene scene = parse_mechanism_scene(text, a.scene);
-  const MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), arith);
-  return print_report(out, check, a.json, exit_status(check));
+  MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), arith);
+  if (scene.curvature.empty() && scene.joint_joining.empty()) return print_report(out, check, a.json, exit_status(check));
+  // The scene asks for the second-order work (docs/curvature.md): its claims join the check's,
+  // its poles, centres and reductions are added to the report.
+  const CurvatureCheck second = check_curvature(scene, {});
+  check.claims.insert(check.claims.end(), second.claims.begin(), second.claims.end());
+  check.not_applicable.insert(check.not_applicable.end(), second.not_applicable.begin(), second.not_applicable.end());
+  if (a.json) {
+    nlohmann::json j = to_json(check);
+    j.update(curvature_json(*second.analysis, second.link_names));
+    out << j.dump(2) << "\n";
+  } else {
+    write_text(out, check);
+    write_curvature_text(out, *second.analysis, second.link_names);
+  }
+  return exit_status(check);
 }
 
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "linkproof/core/error.h"
+#include "linkproof/mechanism/joint_joining.h"
 #include "yaml_document.h"
 
 namespace linkproof {
@@ -22,7 +23,7 @@ class MechanismReader {
 
   MechanismScene read(const YAML::Node& doc) {
     if (!doc.IsMap()) fail("", "expected a map with the fields `name` and `mechanism`, got " + kind_of(doc));
-    check_keys(doc, "", {"name", "description", "mechanism"});
+    check_keys(doc, "", {"name", "description", "mechanism", "curvature", "joint_joining"});
     MechanismScene scene;
     scene.source = source_;
     const YAML::Node name = doc["name"];
@@ -35,7 +36,8 @@ class MechanismReader {
     if (!m) fail("mechanism", "missing required field `mechanism`");
     if (!m.IsMap()) fail("mechanism", "expected a map with ground, joints and inputs, got " + kind_of(m));
     check_keys(m, "mechanism.",
-               {"ground", "links", "joints", "inputs", "points", "dimensions", "tolerance", "catalogue"});
+               {"ground", "links", "joints", "inputs", "points", "dimensions", "tolerance", "catalogue", "curvature",
+                "joint_joining"});
 
     read_links(m);
     const int ground = link_index(m["ground"], "mechanism.ground", true);
@@ -51,6 +53,14 @@ class MechanismReader {
       if (cln::minusp(*scene.tolerance)) fail("mechanism.tolerance", "expected a tolerance >= 0");
     }
     read_dimensions(m, scene);
+    // The second-order work: at the top level (as in docs/curvature.md) or inside `mechanism`.
+    for (const char* key : {"curvature", "joint_joining"})
+      if (doc[key] && m[key])
+        fail(std::string("mechanism.") + key, std::string("`") + key + "` is given both at the top level and in `mechanism`");
+    read_curvature(doc["curvature"] ? doc["curvature"] : m["curvature"], doc["curvature"] ? "curvature" : "mechanism.curvature",
+                   scene);
+    read_joint_joining(doc["joint_joining"] ? doc["joint_joining"] : m["joint_joining"],
+                       doc["joint_joining"] ? "joint_joining" : "mechanism.joint_joining", scene);
     if (const YAML::Node c = m["catalogue"]) {
       if (!c.IsSequence()) fail("mechanism.catalogue", "expected a list of catalogue names, got " + kind_of(c));
       for (const auto& e : c) {
@@ -211,6 +221,67 @@ class MechanismReader {
       out.push_back(std::move(p));
     }
     return out;
+  }
+
+  // curvature: [{point, moving, fixed}]: a joint's or tracer point's name, two different links.
+  void read_curvature(const YAML::Node& cs, const std::string& field, MechanismScene& scene) {
+    if (!cs) return;
+    if (!cs.IsSequence()) fail(field, "expected a list of {point, moving, fixed}, got " + kind_of(cs));
+    const Linkage& g = scene.linkage;
+    for (size_t i = 0; i < cs.size(); ++i) {
+      const std::string f = fmt::format("{}[{}]", field, i);
+      if (!cs[i].IsMap()) fail(f, "expected a map {point, moving, fixed}, got " + kind_of(cs[i]));
+      check_keys(cs[i], f + ".", {"point", "moving", "fixed"});
+      CurvatureRequest r;
+      r.point = name_of(cs[i]["point"], f + ".point", "a joint or tracer point name");
+      if (const auto j = g.find_joint(r.point)) {
+        r.at = g.joint(*j).at;
+      } else {
+        const auto p = std::find_if(scene.points.begin(), scene.points.end(),
+                                    [&](const MechanismPoint& q) { return q.name == r.point; });
+        if (p == scene.points.end())
+          fail(f + ".point", "unknown point " + backticked(r.point) + ": not a joint or a point of mechanism.points");
+        r.at = p->at;
+      }
+      r.moving = link_index(cs[i]["moving"], f + ".moving", false);
+      r.fixed = link_index(cs[i]["fixed"], f + ".fixed", false);
+      if (r.moving == r.fixed) fail(f + ".fixed", "the moving and the fixed link are the same link: there is no relative motion");
+      scene.curvature.push_back(std::move(r));
+    }
+  }
+
+  // joint_joining: [{link, bars: [b1, b2], order: 1|2}].
+  void read_joint_joining(const YAML::Node& js, const std::string& field, MechanismScene& scene) {
+    if (!js) return;
+    if (!js.IsSequence()) fail(field, "expected a list of {link, bars, order}, got " + kind_of(js));
+    const Linkage& g = scene.linkage;
+    for (size_t i = 0; i < js.size(); ++i) {
+      const std::string f = fmt::format("{}[{}]", field, i);
+      if (!js[i].IsMap()) fail(f, "expected a map {link, bars: [b1, b2], order: 1 or 2}, got " + kind_of(js[i]));
+      check_keys(js[i], f + ".", {"link", "bars", "order"});
+      JointJoiningRequest r;
+      r.link = link_index(js[i]["link"], f + ".link", false);
+      if (const YAML::Node o = js[i]["order"]) {
+        const Rational order = read_exact_number(o, source_, f + ".order", "the order (1 or 2)");
+        if (order != 1 && order != 2) fail(f + ".order", "expected 1 (first order) or 2 (second order), got " + format_rational(order));
+        r.order = order == 1 ? 1 : 2;
+      }
+      const YAML::Node bars = js[i]["bars"];
+      if (!bars || !bars.IsSequence() || bars.size() != 2)
+        fail(f + ".bars", "expected a list of 2 bar (link) names, got " +
+                              (bars && bars.IsSequence() ? fmt::format("{} names", bars.size()) : kind_of(bars)));
+      for (int b = 0; b < 2; ++b) {
+        const std::string bf = fmt::format("{}.bars[{}]", f, b);
+        r.bars[b] = link_index(bars[b], bf, false);
+        if (std::string p = bar_problem(g, r.link, r.bars[b]); !p.empty()) fail(bf, p);
+        for (const MechanismInput& in : scene.inputs)
+          if (in.kind == MechanismInput::Kind::Link && in.index == r.bars[b])
+            fail(bf, "bar " + backticked(g.link_name(r.bars[b])) + " is the driver: joint-joining replaces it, so drive "
+                     "another link");
+      }
+      if (r.bars[0] == r.bars[1]) fail(f + ".bars", "the two bars are the same link");
+      scene.joint_joining.push_back(r);
+    }
   }
 
   void read_dimensions(const YAML::Node& m, MechanismScene& scene) {

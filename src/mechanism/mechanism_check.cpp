@@ -81,6 +81,8 @@ void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMoti
   }
 }
 
+}  // namespace
+
 ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx) {
   ClaimOutcome out;
   out.info = claim.info;
@@ -104,7 +106,16 @@ ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismCon
   return out;
 }
 
-}  // namespace
+void run_mechanism_claims(const std::vector<MechanismClaim>& claims, const MechanismContext& ctx,
+                          std::vector<ClaimOutcome>& outcomes, std::vector<std::string>& not_applicable) {
+  for (const MechanismClaim& c : claims) {
+    if (c.applies && !c.applies(ctx)) {
+      not_applicable.push_back(c.info.id);
+      continue;
+    }
+    outcomes.push_back(run_mechanism_claim(c, ctx));
+  }
+}
 
 MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& s) {
   const MechanismClosure closure(s.linkage);
@@ -201,13 +212,7 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
       r.tables.push_back(ReportTable{cat.name, {{"undefined", u.quantity() + ": " + u.reason()}}});
     }
   }
-  for (const MechanismClaim& c : all) {
-    if (c.applies && !c.applies(ctx)) {
-      r.not_applicable.push_back(c.info.id);
-      continue;
-    }
-    r.claims.push_back(run_mechanism_claim(c, ctx));
-  }
+  run_mechanism_claims(all, ctx, r.claims, r.not_applicable);
   return r;
 }
 

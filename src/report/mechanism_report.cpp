@@ -19,6 +19,42 @@ json point_json(const MechanismCheck::PointMotion& p) {
 
 }  // namespace
 
+json claims_summary_json(const std::vector<ClaimOutcome>& claims) {
+  json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
+               {"unexpected_failures", 0}};
+  for (const auto& cl : claims) {
+    const std::string v(to_string(cl.verdict));
+    summary[v] = summary[v].get<int>() + 1;
+    if (cl.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
+  }
+  return summary;
+}
+
+void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims) {
+  fmt::print(out, "\n{:<48} {:<13} {:<9} {}\n", "claim", "verdict", "expected", "evidence");
+  for (const auto& cl : claims) {
+    std::string evidence = cl.error;
+    if (evidence.empty()) {
+      const auto& h = cl.headline;
+      evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
+                                                 : fmt::format("{}: {} vs {}", h.label, h.lhs, h.rhs);
+    }
+    fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
+               evidence);
+  }
+}
+
+void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
+                         const std::vector<std::string>& not_applicable) {
+  write_claim_table(out, claims);
+  if (!not_applicable.empty()) {
+    fmt::print(out, "\nnot applicable:");
+    for (const auto& id : not_applicable) fmt::print(out, " {}", id);
+    fmt::print(out, "\n");
+  }
+  fmt::print(out, "\nexit status {}\n", exit_status(claims));
+}
+
 json to_json(const MechanismCheck& c) {
   json links = json::object(), relative = json::object(), joints = json::object(), points = json::object(),
        tables = json::object(), claims = json::array();
@@ -32,14 +68,8 @@ json to_json(const MechanismCheck& c) {
     for (const auto& [k, v] : t.rows) rows[k] = v;
     tables[t.title] = rows;
   }
-  json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
-               {"unexpected_failures", 0}};
-  for (const auto& cl : c.claims) {
-    claims.push_back(to_json(cl));
-    const std::string v(to_string(cl.verdict));
-    summary[v] = summary[v].get<int>() + 1;
-    if (cl.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
-  }
+  for (const auto& cl : c.claims) claims.push_back(to_json(cl));
+  const json summary = claims_summary_json(c.claims);
   return {{"scene", c.scene},
           {"arithmetic", std::string(to_string(c.arithmetic))},
           {"mobility", c.mobility},
@@ -78,23 +108,7 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
     fmt::print(out, "\n{}\n", t.title);
     for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);
   }
-  fmt::print(out, "\n{:<48} {:<13} {:<9} {}\n", "claim", "verdict", "expected", "evidence");
-  for (const auto& cl : c.claims) {
-    std::string evidence = cl.error;
-    if (evidence.empty()) {
-      const auto& h = cl.headline;
-      evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
-                                                 : fmt::format("{}: {} vs {}", h.label, h.lhs, h.rhs);
-    }
-    fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
-               evidence);
-  }
-  if (!c.not_applicable.empty()) {
-    fmt::print(out, "\nnot applicable:");
-    for (const auto& id : c.not_applicable) fmt::print(out, " {}", id);
-    fmt::print(out, "\n");
-  }
-  fmt::print(out, "\nexit status {}\n", exit_status(c));
+  write_claim_section(out, c.claims, c.not_applicable);
 }
 
 }  // namespace linkproof

@@ -92,10 +92,19 @@ std::vector<MechanismCatalogue> mechanism_catalogues(const MechanismScene& scene
     if (name == "dijksman1966_compound") out.push_back(dijksman1966_compound());
     else if (name == "fourbar_polygon") out.push_back(fourbar_polygon());
     else if (name == "koshel_class3") out.push_back(koshel_class3());
+    else if (name == "dijksman1984_eightbar") out.push_back(dijksman1984_eightbar());
     else
       throw InputError(scene.source, "mechanism.catalogue",
-                       "unknown catalogue `" + name + "`; known: dijksman1966_compound, fourbar_polygon, koshel_class3");
+                       "unknown catalogue `" + name +
+                           "`; known: dijksman1966_compound, fourbar_polygon, koshel_class3, dijksman1984_eightbar");
   }
+  return out;
+}
+
+std::vector<MechanismCatalogue> second_order_catalogues(const MechanismScene& scene) {
+  std::vector<MechanismCatalogue> out;
+  for (MechanismCatalogue& c : mechanism_catalogues(scene))
+    if (c.name == "dijksman1984_eightbar") out.push_back(std::move(c));
   return out;
 }
 

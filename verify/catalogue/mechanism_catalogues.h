@@ -3,6 +3,8 @@
 //                          per polygon, the triangle relations and the input (SPEC A7)
 //   fourbar_polygon        seed 001: the four-bar acceleration polygon and its errata (SPEC B)
 //   koshel_class3          seed 003: the class-III mechanism with sliders (SPEC C)
+//   dijksman1984_eightbar  seed 004: the eight-bar's section-3 poles, relocation formulas (1')-(7''),
+//                          errata (SPEC D); run by `check` and by `curvature`
 #pragma once
 
 #include <string>
@@ -15,9 +17,12 @@ namespace linkproof::catalogues {
 MechanismCatalogue dijksman1966_compound();
 MechanismCatalogue fourbar_polygon();
 MechanismCatalogue koshel_class3();
+MechanismCatalogue dijksman1984_eightbar();
 
 /// The catalogues named by scene.catalogues; an unknown name is InputError(scene.source,
 /// "mechanism.catalogue", ...).
 std::vector<MechanismCatalogue> mechanism_catalogues(const MechanismScene& scene);
+/// The second-order catalogues among scene.catalogues (what `linkproof curvature` runs).
+std::vector<MechanismCatalogue> second_order_catalogues(const MechanismScene& scene);
 
 }  // namespace linkproof::catalogues

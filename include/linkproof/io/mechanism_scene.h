@@ -21,6 +21,10 @@
 //       - {joints: ["A", "B"], length: 60}          # joints of one link
 //     tolerance: 1/10                               # optional: allowed | |AB| - length |
 //     catalogue: [fourbar_polygon]                  # optional: paper-specific claim sets to run
+//   curvature:                                      # optional (top level or in `mechanism`):
+//     - {point: "23", moving: "2", fixed: "4"}      # path curvature centres (docs/curvature.md)
+//   joint_joining:                                  # optional: reductions, in order
+//     - {link: "2", bars: ["1", "3"], order: 2}
 //
 // - A joint has a unique name, `type` revolute or prismatic, exactly two different links and a
 //   point `at`; a prismatic joint also a non-zero `axis` (links[0] is the guide that carries the

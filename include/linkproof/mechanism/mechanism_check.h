@@ -95,6 +95,14 @@ MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<Me
 /// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim errored.
 int exit_status(const MechanismCheck& check);
 
+/// Runs one claim: its comparisons judged exactly; an UndefinedQuantity thrown by the claim
+/// gives `undefined`, any other exception `error`.
+ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx);
+/// Runs every claim that applies (appended to `outcomes`); the ids of the others are appended to
+/// `not_applicable`.
+void run_mechanism_claims(const std::vector<MechanismClaim>& claims, const MechanismContext& ctx,
+                          std::vector<ClaimOutcome>& outcomes, std::vector<std::string>& not_applicable);
+
 /// The built-in claims (routes_agree, driver_inversion).
 std::vector<MechanismClaim> builtin_mechanism_claims();
 

@@ -1,0 +1,36 @@
+// linkproof curvature SCENE [--json]
+// Poles, path curvature centres, Bobillier's construction and joint-joining reductions of a
+// mechanism scene (docs/curvature.md), with their claims, exact.
+#include "command.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "linkproof/report/curvature_report.h"
+#include "mechanism_catalogues.h"
+
+namespace linkproof::cli {
+
+namespace {
+
+struct CurvatureArgs {
+  std::string scene;
+  bool json = false;
+};
+
+int run_curvature(const CurvatureArgs& a, std::ostream& out, std::ostream&) {
+  const std::string text = read_scene_text(a.scene);
+  if (!is_mechanism_scene_text(text))
+    throw InputError(a.scene, "mechanism", "expected a mechanism scene (a map with a top-level `mechanism` key)");
+  const MechanismScene scene = parse_mechanism_scene(text, a.scene);
+  const CurvatureCheck check = check_curvature(scene, catalogues::second_order_catalogues(scene));
+  return print_report(out, check, a.json, exit_status(check));
+}
+
+}  // namespace
+
+void add_curvature_command(CLI::App& app, Action& action) {
+  auto* c = app.add_subcommand("curvature", "poles, curvature centres, Bobillier and joint-joining of a mechanism (SPEC D)");
+  auto& a = bind_action<CurvatureArgs>(c, action, run_curvature);
+  c->add_option("scene", a.scene, "mechanism scene, e.g. verify/scenes/mechanisms/dijksman1984_eightbar.yaml")->required();
+  c->add_flag("--json", a.json, "print JSON (docs/curvature.md)");
+}
+
+}  // namespace linkproof::cli

@@ -1,0 +1,135 @@
+#include "linkproof/mechanism/curvature_analysis.h"
+
+#include <fmt/format.h>
+
+namespace linkproof {
+
+namespace {
+
+// Two (point, centre) pairs of the motion m/f for Bobillier: from bars joining m and f when there
+// are two (a four-bar: independent of the analytic route), else from the analytic centres of two
+// joints of m.
+struct BobillierPairs {
+  Vec2<Rational> A, alpha, B, beta;
+  std::string from;
+};
+
+std::optional<BobillierPairs> bobillier_pairs(const Linkage& g, const std::vector<LinkField<Rational>>& fields,
+                                              const CurvatureRequest& r) {
+  std::vector<std::pair<Vec2<Rational>, Vec2<Rational>>> pairs;
+  std::vector<std::string> names;
+  for (int b = 0; b < g.link_count() && pairs.size() < 2; ++b) {
+    if (b == r.moving || b == r.fixed || !bar_problem(g, r.moving, b).empty()) continue;
+    const BarEnds e = bar_ends(g, r.moving, b);
+    if (e.far_link != r.fixed) continue;
+    pairs.emplace_back(g.joint(e.near_joint).at, g.joint(e.far_joint).at);
+    names.push_back(g.link_name(b));
+  }
+  if (pairs.size() == 2)
+    return BobillierPairs{pairs[0].first, pairs[0].second, pairs[1].first, pairs[1].second,
+                          fmt::format("bars {} and {} joining links {} and {}", names[0], names[1],
+                                      g.link_name(r.moving), g.link_name(r.fixed))};
+  pairs.clear();
+  names.clear();
+  const auto& fm = fields[static_cast<size_t>(r.moving)];
+  const auto& ff = fields[static_cast<size_t>(r.fixed)];
+  for (const LinkageJoint& j : g.joints()) {
+    if (pairs.size() == 2) break;
+    if (j.type != JointType::Revolute || (j.links[0] != r.moving && j.links[1] != r.moving)) continue;
+    if (is_zero_vector(j.at - r.at)) continue;
+    const auto c = construct_curvature_centre(j.at, relative_point_motion(fm, ff, j.at), "");
+    if (!c.is_finite()) continue;
+    pairs.emplace_back(j.at, c.at);
+    names.push_back(j.name);
+  }
+  if (pairs.size() < 2) return std::nullopt;
+  return BobillierPairs{pairs[0].first, pairs[0].second, pairs[1].first, pairs[1].second,
+                        fmt::format("analytic centres of joints {} and {} (no two bars join links {} and {})",
+                                    names[0], names[1], g.link_name(r.moving), g.link_name(r.fixed))};
+}
+
+bool same_rates(const Linkage& g, const std::vector<Rational>& a, const std::vector<Rational>& b, const int skip[2]) {
+  for (int l = 0; l < g.link_count(); ++l)
+    if (l != skip[0] && l != skip[1] && a[static_cast<size_t>(l)] != b[static_cast<size_t>(l)]) return false;
+  return true;
+}
+
+}  // namespace
+
+const PlanePoint<Rational>& CurvatureAnalysis::pole(int i, int k) const {
+  if (i > k) std::swap(i, k);
+  for (const auto& p : poles)
+    if (p.i == i && p.k == k) return p.pole;
+  throw InternalError(fmt::format("no pole of links {} and {}", i, k));
+}
+
+CurvatureAnalysis analyse_curvature(const MechanismScene& s, const MechanismSolution<Rational>& truth) {
+  const Linkage& g = s.linkage;
+  CurvatureAnalysis a;
+  const auto fields = link_fields(g, truth.motion);
+  for (int i = 0; i < g.link_count(); ++i)
+    for (int k = i + 1; k < g.link_count(); ++k)
+      a.poles.push_back({i, k, construct_pole(fields[static_cast<size_t>(i)], fields[static_cast<size_t>(k)],
+                                              fmt::format("P_{},{}", g.link_name(i), g.link_name(k)))});
+  for (const CurvatureRequest& r : s.curvature) {
+    CentreEntry c;
+    c.request = r;
+    const auto& fm = fields[static_cast<size_t>(r.moving)];
+    const auto& ff = fields[static_cast<size_t>(r.fixed)];
+    c.motion = relative_point_motion(fm, ff, r.at);
+    c.centre = construct_curvature_centre(
+        r.at, c.motion, fmt::format("centre of {} in {}/{}", r.point, g.link_name(r.moving), g.link_name(r.fixed)));
+    c.circle = construct_inflection_circle(fm, ff, fmt::format("P_{},{}", g.link_name(r.moving), g.link_name(r.fixed)));
+    if (const auto p = bobillier_pairs(g, fields, r)) {
+      c.bobillier = construct_bobillier(p->A, p->alpha, p->B, p->beta, r.at, false);
+      c.bobillier_mirrored = construct_bobillier(p->A, p->alpha, p->B, p->beta, r.at, true);
+      c.bobillier_pairs = p->from;
+    } else {
+      c.bobillier_pairs = "no two points of the moving link with a finite curvature centre";
+    }
+    a.centres.push_back(std::move(c));
+  }
+  Linkage current = g;
+  for (const JointJoiningRequest& r : s.joint_joining) {
+    ReductionEntry e;
+    e.request = r;
+    e.linkage_before = current;
+    try {
+      e.before = solve_rigid_body(current, s.inputs, s.source);
+      e.step = join_joints(current, e.before.motion, r);
+      e.problem = e.step.problem;
+      if (e.problem.empty()) {
+        e.after = solve_rigid_body(e.step.reduced, s.inputs, s.source);
+        e.solved = true;
+        e.velocities_preserved = same_rates(g, e.before.motion.omega, e.after.motion.omega, r.bars);
+        e.accelerations_preserved = same_rates(g, e.before.motion.omega_dot, e.after.motion.omega_dot, r.bars);
+        current = e.step.reduced;
+      }
+    } catch (const InputError& err) {
+      e.problem = std::string("the reduced linkage cannot be solved: ") + err.what();
+    }
+    a.reductions.push_back(std::move(e));
+  }
+  return a;
+}
+
+CurvatureCheck check_curvature(const MechanismScene& s, const std::vector<MechanismCatalogue>& catalogues) {
+  CurvatureCheck r;
+  r.scene = s.name;
+  r.link_names = s.linkage.link_names();
+  const MechanismSolution<Rational> truth = solve_mechanism_exact(s);
+  r.analysis = std::make_shared<const CurvatureAnalysis>(analyse_curvature(s, truth));
+  const MechanismContext ctx{s, truth};
+  std::vector<MechanismClaim> all = curvature_claims(r.analysis);
+  for (const MechanismCatalogue& cat : catalogues) all.insert(all.end(), cat.claims.begin(), cat.claims.end());
+  run_mechanism_claims(all, ctx, r.claims, r.not_applicable);
+  return r;
+}
+
+std::string exact_radius_text(const Rational& squared) {
+  Rational root;
+  if (cln::sqrtp(squared, &root)) return format_rational(root);
+  return "sqrt(" + format_rational(squared) + ")";
+}
+
+}  // namespace linkproof
