@@ -42,23 +42,6 @@ void write_sweep_scene(const std::string& dir, const SweepCase& c) {
   if (!f) throw InputError(path, "--scenes", "cannot write the scene file");
 }
 
-namespace {
-
-/// Checks that a case read back from the result file is case `expected` of this sweep.
-void check_belongs(const SweepLine& line, long expected, const SweepOptions& o, const std::string& file,
-                   long number) {
-  const SweepCase& c = *line.sweep_case;
-  const auto [n, index] = SweepPlan(o).at(expected);
-  if (c.k != expected || c.polygon.seed != o.seed || c.polygon.n != n || c.polygon.index != index ||
-      line.arithmetic != o.arithmetic)
-    throw InputError(file, fmt::format("line {}", number),
-                     fmt::format("case {} (seed {}, n = {}, index {}, {}) is not the next case of this sweep, which is "
-                                 "case {} (seed {}, n = {}, index {}, {}): the file belongs to another sweep or shard",
-                                 c.k, c.polygon.seed, c.polygon.n, c.polygon.index, to_string(line.arithmetic),
-                                 expected, o.seed, n, index, to_string(o.arithmetic)));
-}
-
-}  // namespace
 
 BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const BatchSweepOptions& o) {
   const auto start = std::chrono::steady_clock::now();
@@ -87,7 +70,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
       }
       if (position >= cases.size())
         throw InputError(o.out, fmt::format("line {}", number), "more cases than this sweep has");
-      check_belongs(line, cases[position], o.sweep, o.out, number);
+      check_case_identity(line, cases[position], o.sweep, o.out, fmt::format("line {}", number));
       sink->add(*line.sweep_case, false, o.out, fmt::format("line {}", number));
       ++position;
     });

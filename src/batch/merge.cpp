@@ -84,12 +84,7 @@ SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOp
     auto line = read(s);
     if (!line || !line->sweep_case)
       throw InputError(source(s), where, fmt::format("case {} expected: shard {}/{} is incomplete", k, s + 1, shards));
-    const SweepCase& c = *line->sweep_case;
-    const auto [n, index] = SweepPlan(o).at(k);
-    if (c.k != k || c.polygon.seed != o.seed || c.polygon.n != n || c.polygon.index != index ||
-        line->arithmetic != o.arithmetic)
-      throw InputError(source(s), where, fmt::format("holds case {} (n = {}, index {}) where case {} belongs", c.k,
-                                                     c.polygon.n, c.polygon.index, k));
+    check_case_identity(*line, k, o, source(s), where);
     sink.add(*line->sweep_case, true, source(s), where);
   }
   for (int s = 0; s < shards; ++s) {

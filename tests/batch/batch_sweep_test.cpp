@@ -47,7 +47,9 @@ TEST(BatchSweep, ResultFileHasOneLinePerCaseThenASummary) {
   nlohmann::json last;
   while (std::getline(in, line)) {
     last = nlohmann::json::parse(line);
-    if (!last.contains("summary")) EXPECT_EQ(last["case"].get<long>(), cases++);
+    if (!last.contains("summary")) {
+      EXPECT_EQ(last["case"].get<long>(), cases++);
+    }
   }
   EXPECT_EQ(cases, 50);
   ASSERT_TRUE(last.contains("summary"));

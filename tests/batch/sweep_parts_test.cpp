@@ -76,7 +76,8 @@ TEST(BatchSweep, FailingCasesAreWrittenAsScenesThatCheckReads) {
     const auto check = run_cli({"check", entry.path().string(), "--json"});
     ASSERT_EQ(check.code, 0) << entry.path() << check.err;
     bool reversed_beta_fails = false;
-    for (const auto& c : nlohmann::json::parse(check.out)["claims"])
+    const nlohmann::json report = nlohmann::json::parse(check.out);  // named: the loop must not dangle
+    for (const auto& c : report["claims"])
       if (c["id"] == "dijksman1966.eq9a.reversed_beta") reversed_beta_fails = c["verdict"] == "fails";
     EXPECT_TRUE(reversed_beta_fails) << entry.path();
   }

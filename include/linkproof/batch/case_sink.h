@@ -8,6 +8,7 @@
 
 #include "linkproof/batch/result_file.h"
 #include "linkproof/check/sweep_tally.h"
+#include "linkproof/report/sweep_lines.h"
 
 namespace linkproof {
 
@@ -34,5 +35,10 @@ class CaseSink {
   ResultFile* file_;
   std::string scenes_dir_;
 };
+
+/// Checks that `line` (a case line of `file`, at `where`) is case `expected` of sweep `o`: same
+/// case number, seed, n, index and arithmetic. InputError otherwise, naming both cases.
+void check_case_identity(const SweepLine& line, long expected, const SweepOptions& o, const std::string& file,
+                         const std::string& where);
 
 }  // namespace linkproof
