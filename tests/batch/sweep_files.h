@@ -20,9 +20,11 @@
 
 namespace linkproof::test {
 
-/// A fresh, empty directory under the test temp dir.
+/// A fresh, empty directory under the test temp dir, private to this process (ctest runs tests
+/// in parallel processes that would otherwise share it).
 inline std::string fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / ("linkproof_" + name);
+  const auto dir =
+      std::filesystem::path(::testing::TempDir()) / ("linkproof_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
