@@ -9,6 +9,7 @@ PACKAGES=(
   build-essential g++ cmake pkg-config
   libginac-dev libcln-dev libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev librapidcheck-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
 )
 
 echo "==> install_deps: checking ${#PACKAGES[@]} Debian packages with dpkg-query"

@@ -1,6 +1,8 @@
 // The linkproof command line, callable in-process (the tests run it this way).
 //   linkproof check SCENE [--arith exact|double|long-double] [--json] [--no-terms]
 //   linkproof sweep --n 4..12 --count N --seed S [--arith ...] [--index I] [--json]
+//                   [--jobs N] [--out FILE [--resume]] [--shard K/N] [--scenes DIR]
+//   linkproof merge --out FILE SHARD_FILE... [--scenes DIR] [--json]
 //   linkproof count --n N|A..B [--json]   |   linkproof count --eightbar [--polygons ...] [--json]
 // Exit codes: 0 every claim as expected, 1 a claim expected to hold failed, 2 bad input,
 // 3 internal error.

@@ -55,5 +55,6 @@ void add_check_claim_command(CLI::App& app, Action& action);
 void add_count_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_curvature_command(CLI::App& app, Action& action);
+void add_merge_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli

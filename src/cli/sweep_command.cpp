@@ -1,26 +1,23 @@
 // linkproof sweep --n 4..12 --count N --seed S [--arith ...] [--index I] [--json]
-#include <optional>
+//                 [--jobs N] [--out FILE [--resume]] [--shard K/N] [--scenes DIR]
+#include <unistd.h>
 
-#include "command.h"
+#include <cstdio>
+#include <iostream>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
 #include "dijksman1966.h"
-#include "linkproof/check/sweep.h"
+#include "linkproof/batch/batch_sweep.h"
+#include "linkproof/batch/worker_pool.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/report/text_report.h"
+#include "sweep_args.h"
 
 namespace linkproof::cli {
 
-namespace {
-
-struct SweepArgs {
-  std::string n_range = "4..12";
-  int count = 100;
-  std::uint64_t seed = 1;
-  std::string arith = "exact";
-  std::optional<int> index;
-  bool json = false;
-};
-
-int run_sweep_command(const SweepArgs& a, std::ostream& out, std::ostream&) {
+SweepOptions sweep_options_or_throw(const SweepArgs& a) {
   SweepOptions o;
   std::tie(o.n_min, o.n_max) = parse_n_range(a.n_range, "--n", 4, 200);
   if (a.count < 1 || a.count > 1000000) throw InputError("<command line>", "--count", "must be between 1 and 1000000");
@@ -29,23 +26,69 @@ int run_sweep_command(const SweepArgs& a, std::ostream& out, std::ostream&) {
   o.seed = a.seed;
   o.arithmetic = arithmetic_or_throw(a.arith);
   o.only_index = a.index;
-  GroundTruthEngine engine;
-  const SweepReport r = run_sweep(engine, dijksman1966::catalogue(), o);
-  return print_report(out, r, a.json, r.exit_status());
+  return o;
+}
+
+void add_sweep_options(CLI::App* s, SweepArgs& a) {
+  s->add_option("--n", a.n_range, "number of sides, N or A..B (default 4..12)");
+  s->add_option("--count", a.count, "cases per n (default 100)");
+  s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)");
+  s->add_option("--arith", a.arith,
+                "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
+  s->add_option("--out", a.out, "stream every case to FILE (JSON Lines: one case per line, then a summary line)");
+  s->add_option("--scenes", a.scenes, "write every case with an unexpected outcome to DIR as a scene `check` reads");
+  s->add_flag("--json", a.json, "print JSON");
+}
+
+Shard parse_shard(const std::string& s) {
+  Shard shard;
+  char tail = 0;
+  if (std::sscanf(s.c_str(), "%d/%d%c", &shard.k, &shard.n, &tail) != 2 || shard.n < 1 || shard.k < 1 ||
+      shard.k > shard.n)
+    throw InputError("<command line>", "--shard", "'" + s + "' is not K/N with 1 <= K <= N");
+  return shard;
+}
+
+namespace {
+
+struct SweepCommandArgs : SweepArgs {
+  std::optional<int> jobs;
+  bool resume = false;
+  std::string shard;
+};
+
+int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream& err) {
+  BatchSweepOptions b;
+  b.sweep = sweep_options_or_throw(a);
+  b.jobs = a.jobs.value_or(default_jobs());
+  if (b.jobs < 1 || b.jobs > 1024) throw InputError("<command line>", "--jobs", "must be between 1 and 1024");
+  if (!a.shard.empty()) b.shard = parse_shard(a.shard);
+  b.out = a.out;
+  b.resume = a.resume;
+  b.scenes_dir = a.scenes;
+  if (a.resume && a.out.empty()) throw InputError("<command line>", "--resume", "needs --out FILE (the file to continue)");
+  if (a.index && (!a.out.empty() || !a.shard.empty()))
+    throw InputError("<command line>", "--index", "replays one case; it cannot be combined with --out or --shard");
+  // The bar only on the real stderr, and only when it is a terminal.
+  if (&err == &std::cerr && ::isatty(STDERR_FILENO)) b.progress = &err;
+  const BatchSweepResult r = run_batch_sweep(dijksman1966::catalogue(), b);
+  if (r.status != BatchSweepResult::Status::Complete) {
+    fmt::print(err, "linkproof sweep: {}\n", r.message);
+    return r.exit_status();
+  }
+  return print_report(out, r.report, a.json, r.exit_status());
 }
 
 }  // namespace
 
 void add_sweep_command(CLI::App& app, Action& action) {
   auto* s = app.add_subcommand("sweep", "check every claim on random exact polygons");
-  auto& a = bind_action<SweepArgs>(s, action, run_sweep_command);
-  s->add_option("--n", a.n_range, "number of sides, N or A..B (default 4..12)");
-  s->add_option("--count", a.count, "cases per n (default 100)");
-  s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)");
-  s->add_option("--arith", a.arith,
-                "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
+  auto& a = bind_action<SweepCommandArgs>(s, action, run_sweep_command);
+  add_sweep_options(s, a);
   s->add_option("--index", a.index, "replay only this case index");
-  s->add_flag("--json", a.json, "print JSON");
+  s->add_option("--jobs", a.jobs, "worker processes (default: every core); the output does not depend on it");
+  s->add_flag("--resume", a.resume, "continue --out FILE from its last complete case (after a kill or a crash)");
+  s->add_option("--shard", a.shard, "run only shard K of N (cases k with k mod N = K-1); combine with `merge`");
 }
 
 }  // namespace linkproof::cli

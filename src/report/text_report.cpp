@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "linkproof/io/scene.h"
+#include "linkproof/io/sweep_scene.h"
 
 namespace linkproof {
 
@@ -33,14 +33,6 @@ std::string evidence(const ComparisonOutcome& c) {
   if (!c.reason.empty()) s += "  (" + c.reason + ")";
   if (!c.trust_route.empty()) s += "  trust: " + c.trust_route;
   return s;
-}
-
-std::string polygon_yaml(const RandomPolygonCase& rc) {
-  PolygonScene s;
-  s.name = fmt::format("sweep-seed{}-n{}-i{}", rc.seed, rc.n, rc.index);
-  s.polygon = rc.polygon;
-  s.rates = rc.rates;
-  return polygon_scene_to_yaml(s);
 }
 
 }  // namespace
@@ -120,7 +112,7 @@ void write_text(std::ostream& out, const SweepReport& s) {
       fmt::print(out, "- {} {} on n = {}, index {} ({}): {}\n", e.claim_id, to_string(e.verdict), e.polygon.n,
                  e.polygon.index, e.polygon.family, e.error.empty() ? evidence(e.headline) : e.error);
       fmt::print(out, "  replay: linkproof sweep --n {} --seed {} --index {}\n", e.polygon.n, o.seed, e.polygon.index);
-      fmt::print(out, "  scene (exact):\n{}", polygon_yaml(e.polygon));
+      fmt::print(out, "  scene (exact):\n{}", sweep_scene_yaml(e.polygon));
     }
   }
   fmt::print(out, "\nverdict rule: {}\n", s.tolerance_rule);

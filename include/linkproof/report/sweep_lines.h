@@ -1,0 +1,48 @@
+// The streaming result file of a sweep (`sweep --out FILE`): JSON Lines, one case per line in
+// case order, then one summary line. Field names are a contract (docs/sweeps.md):
+//
+//   {"arithmetic":"exact","case":17,"examples":[...],"family":"star","index":3,"n":5,
+//    "not_applicable":["dijksman1966.sec3"],"seed":7,"verdicts":{"dijksman1966.eq22":"holds",...}}
+//   {"summary":{ ...the `sweep --json` object without "seconds"..., "shard":"2/4" (sharded only)}}
+//
+// `examples` holds the evidence of the outcomes the report keeps from this case (SweepTally):
+// {"claim", "verdict", "evidence" (as a comparison in `check --json`), "error" (if any)}.
+// Keys are sorted and numbers printed by nlohmann::json, so equal results give equal bytes.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "linkproof/check/sweep_case.h"
+
+namespace linkproof {
+
+/// Shard K of N (1 <= K <= N): the cases k with k mod N = K - 1. {1, 1} is the whole sweep.
+struct Shard {
+  int k = 1, n = 1;
+  bool whole() const { return n == 1; }
+  bool owns(long c) const { return c % n == k - 1; }
+};
+
+/// One case as a result-file line (no trailing newline).
+std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic);
+/// The summary line (no trailing newline): the report as `sweep --json` prints it, without
+/// the run time, plus "shard" when the sweep is sharded.
+std::string sweep_summary_line(const SweepReport& report, const Shard& shard);
+
+/// What one line of a result file holds.
+struct SweepLine {
+  std::optional<SweepCase> sweep_case;  ///< a case line
+  std::optional<nlohmann::json> summary;  ///< the summary line's object
+  Arithmetic arithmetic = Arithmetic::Exact;  ///< of a case line
+};
+
+/// Parses one line; an InputError names `file`, "line L" and the problem.
+SweepLine parse_sweep_line(const std::string& line, const std::string& file, long line_number);
+
+/// The inverse of to_json(const ComparisonOutcome&) (report/json_report.h); throws InputError.
+ComparisonOutcome comparison_from_json(const nlohmann::json& j, const std::string& file, const std::string& field);
+
+}  // namespace linkproof

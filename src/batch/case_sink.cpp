@@ -1,0 +1,34 @@
+#include "linkproof/batch/case_sink.h"
+
+#include "linkproof/batch/batch_sweep.h"
+#include <fmt/format.h>
+
+namespace linkproof {
+
+CaseSink::CaseSink(const std::vector<Claim>& catalogue, const SweepOptions& options, ResultFile* file,
+                   std::string scenes_dir)
+    : options_(options), tally_(catalogue, options), file_(file), scenes_dir_(std::move(scenes_dir)) {}
+
+void CaseSink::add(SweepCase& c, bool write, const std::string& origin_file, const std::string& origin_field) {
+  if (const auto missing = tally_.add(c))
+    throw InputError(origin_file, origin_field,
+                     "case " + std::to_string(c.k) + " lacks the evidence of " + *missing +
+                         " that the report keeps (a file written by another rule, or edited)");
+  if (write && file_ != nullptr) file_->append(sweep_case_line(c, options_.arithmetic));
+  if (!scenes_dir_.empty() && tally_.has_unexpected(c)) write_sweep_scene(scenes_dir_, c);
+}
+
+void check_case_identity(const SweepLine& line, long expected, const SweepOptions& o, const std::string& file,
+                         const std::string& where) {
+  const SweepCase& c = *line.sweep_case;
+  const auto [n, index] = SweepPlan(o).at(expected);
+  if (c.k != expected || c.polygon.seed != o.seed || c.polygon.n != n || c.polygon.index != index ||
+      line.arithmetic != o.arithmetic)
+    throw InputError(file, where,
+                     fmt::format("case {} (seed {}, n = {}, index {}, {}) is not the next case of this sweep, which is "
+                                 "case {} (seed {}, n = {}, index {}, {}): the file belongs to another sweep or shard",
+                                 c.k, c.polygon.seed, c.polygon.n, c.polygon.index, to_string(line.arithmetic),
+                                 expected, o.seed, n, index, to_string(o.arithmetic)));
+}
+
+}  // namespace linkproof

@@ -1,0 +1,56 @@
+#include "linkproof/batch/result_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "linkproof/core/error.h"
+
+namespace linkproof {
+
+ResultFile::ResultFile(const std::string& path, bool resume, const LineVisitor& visit) : path_(path) {
+  std::error_code ec;
+  const bool exists = std::filesystem::exists(path, ec);
+  if (exists && !resume && std::filesystem::file_size(path, ec) > 0)
+    throw InputError(path, "--out", "exists and is not empty; pass --resume to continue it, or remove it");
+  if (exists && resume) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "--out", "cannot be read");
+    std::string line;
+    long complete_bytes = 0;
+    while (std::getline(in, line)) {
+      if (in.eof()) break;  // no newline: a line cut off by a crash
+      complete_bytes += static_cast<long>(line.size()) + 1;
+      visit(line, ++lines_read_);
+    }
+    const long size = static_cast<long>(std::filesystem::file_size(path, ec));
+    if (size > complete_bytes) {
+      std::filesystem::resize_file(path, static_cast<std::uintmax_t>(complete_bytes), ec);
+      if (ec) throw InputError(path, "--out", "cannot cut off the incomplete last line: " + ec.message());
+      bytes_cut_ = size - complete_bytes;
+    }
+  }
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw InputError(path, "--out", std::string("cannot be opened for writing: ") + std::strerror(errno));
+}
+
+ResultFile::~ResultFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void ResultFile::append(const std::string& line) {
+  const std::string data = line + "\n";
+  size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t w = ::write(fd_, data.data() + done, data.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w < 0) throw InputError(path_, "--out", std::string("write failed: ") + std::strerror(errno));
+    done += static_cast<size_t>(w);
+  }
+}
+
+}  // namespace linkproof

@@ -1,0 +1,121 @@
+// linkproof_mpi: a sweep distributed over MPI ranks (the optional MPI component).
+//
+//   mpirun -np 64 build/linkproof_mpi --n 4..12 --count 10000 --seed 7 --out sweep.jsonl
+//
+// Rank r computes shard r+1 of N = size (the cases k with k mod N = r, as `sweep --shard`),
+// trimmed to the examples its report keeps; rank 0 gathers every shard's lines and merges them
+// (batch/merge.h). The result file and the report are the bytes `linkproof sweep` gives with the
+// same options. Options: those of `sweep` that describe the cases and the output (see
+// sweep_args.h); exit codes as `sweep` (0, 1 a true claim failed, 2 bad input, 3 internal error).
+#include <mpi.h>
+
+#include <climits>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "dijksman1966.h"
+#include "linkproof/batch/batch_sweep.h"
+#include "linkproof/batch/merge.h"
+#include "linkproof/check/sweep_tally.h"
+#include "linkproof/report/json_report.h"
+#include "linkproof/report/text_report.h"
+#include "sweep_args.h"
+
+namespace linkproof::cli {
+namespace {
+
+/// This rank's shard as result-file lines (cases, then the shard's summary).
+std::string shard_lines(const std::vector<Claim>& catalogue, const SweepOptions& o, const Shard& shard) {
+  GroundTruthEngine engine;
+  SweepTally tally(catalogue, o);
+  std::string lines;
+  for (long k : shard_cases(o, shard)) {
+    SweepCase c = run_sweep_case(engine, catalogue, o, k);
+    tally.add(c);
+    lines += sweep_case_line(c, o.arithmetic) + "\n";
+  }
+  return lines + sweep_summary_line(tally.report(), shard) + "\n";
+}
+
+/// Gathers every rank's text on rank 0 (empty elsewhere), one string per rank.
+std::vector<std::string> gather(const std::string& mine, int rank, int size) {
+  if (mine.size() > static_cast<size_t>(INT_MAX))
+    throw InternalError("a rank's result exceeds 2 GiB: use more ranks, or `sweep --shard` and `merge`");
+  int length = static_cast<int>(mine.size());
+  std::vector<int> lengths(static_cast<size_t>(size)), offsets(static_cast<size_t>(size));
+  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  long total = 0;
+  for (int r = 0; r < size; ++r) {
+    offsets[static_cast<size_t>(r)] = static_cast<int>(total);
+    total += lengths[static_cast<size_t>(r)];
+  }
+  if (rank == 0 && total > INT_MAX) throw InternalError("the gathered result exceeds 2 GiB: use `sweep --shard` and `merge`");
+  std::string all(rank == 0 ? static_cast<size_t>(total) : 0, '\0');
+  MPI_Gatherv(mine.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+  std::vector<std::string> parts;
+  if (rank == 0)
+    for (int r = 0; r < size; ++r)
+      parts.push_back(all.substr(static_cast<size_t>(offsets[static_cast<size_t>(r)]),
+                                 static_cast<size_t>(lengths[static_cast<size_t>(r)])));
+  return parts;
+}
+
+int run(int argc, char** argv, int rank, int size) {
+  CLI::App app{"linkproof_mpi: `linkproof sweep` distributed over MPI ranks"};
+  SweepArgs a;
+  add_sweep_options(&app, a);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (rank == 0) return app.exit(e) == 0 ? 0 : 2;
+    return e.get_exit_code() == 0 ? 0 : 2;
+  }
+  SweepOptions o;
+  try {
+    o = sweep_options_or_throw(a);  // the same on every rank: all fail or none does
+  } catch (const InputError& e) {
+    if (rank == 0) fmt::print(std::cerr, "linkproof_mpi: bad input: {}\n", e.what());
+    return 2;
+  }
+  const auto catalogue = dijksman1966::catalogue();
+  const std::vector<std::string> parts = gather(shard_lines(catalogue, o, Shard{rank + 1, size}), rank, size);
+  if (rank != 0) return 0;
+  std::vector<std::istringstream> in;
+  for (const auto& p : parts) in.emplace_back(p);
+  try {
+    const SweepReport r = merge_shard_lines(
+        catalogue, o, size,
+        [&](int s) -> std::optional<std::string> {
+          std::string line;
+          if (std::getline(in[static_cast<size_t>(s)], line)) return line;
+          return std::nullopt;
+        },
+        [](int s) { return fmt::format("<rank {}>", s); }, a.out, a.scenes);
+    return print_report(std::cout, r, a.json, r.exit_status());
+  } catch (const InputError& e) {
+    fmt::print(std::cerr, "linkproof_mpi: bad input: {}\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace
+}  // namespace linkproof::cli
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  int code = 3;
+  try {
+    code = linkproof::cli::run(argc, argv, rank, size);
+  } catch (const std::exception& e) {
+    fmt::print(std::cerr, "linkproof_mpi: internal error on rank {}: {}\n", rank, e.what());
+    MPI_Abort(MPI_COMM_WORLD, 3);
+  }
+  MPI_Finalize();
+  return code;
+}

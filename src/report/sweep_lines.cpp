@@ -1,0 +1,142 @@
+#include "linkproof/report/sweep_lines.h"
+
+#include <fmt/format.h>
+
+#include "linkproof/core/error.h"
+#include "linkproof/report/json_report.h"
+
+namespace linkproof {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr Verdict kVerdicts[] = {Verdict::Holds, Verdict::Fails, Verdict::Undefined, Verdict::Inconclusive,
+                                 Verdict::Error};
+
+Verdict verdict_or_throw(const json& j, const std::string& file, const std::string& field) {
+  if (j.is_string())
+    for (Verdict v : kVerdicts)
+      if (j.get<std::string>() == to_string(v)) return v;
+  throw InputError(file, field, "not a verdict (holds, fails, undefined, inconclusive, error): " + j.dump());
+}
+
+const json& member(const json& j, const char* key, json::value_t type, const std::string& file,
+                   const std::string& where) {
+  const auto it = j.find(key);
+  if (it == j.end()) throw InputError(file, where + "." + key, "missing");
+  const bool ok = type == json::value_t::number_integer ? it->is_number_integer() : it->type() == type;
+  if (!ok) throw InputError(file, where + "." + key, "has the wrong type: " + it->dump());
+  return *it;
+}
+
+std::string text(const json& j, const char* key, const std::string& file, const std::string& where) {
+  return member(j, key, json::value_t::string, file, where).get<std::string>();
+}
+
+std::string optional_text(const json& j, const char* key, const std::string& file, const std::string& where) {
+  return j.contains(key) ? text(j, key, file, where) : std::string();
+}
+
+}  // namespace
+
+std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic) {
+  json verdicts = json::object();
+  for (const auto& [id, v] : c.verdicts) verdicts[id] = std::string(to_string(v));
+  json examples = json::array();
+  for (const auto& e : c.examples) {
+    json x{{"claim", e.claim_id}, {"verdict", std::string(to_string(e.verdict))}, {"evidence", to_json(e.headline)}};
+    if (!e.error.empty()) x["error"] = e.error;
+    examples.push_back(std::move(x));
+  }
+  const RandomPolygonCase& p = c.polygon;
+  return json{{"case", c.k},          {"seed", p.seed},       {"n", p.n},
+              {"index", p.index},     {"family", p.family},   {"arithmetic", std::string(to_string(arithmetic))},
+              {"verdicts", verdicts}, {"examples", examples}, {"not_applicable", c.not_applicable}}
+      .dump();
+}
+
+std::string sweep_summary_line(const SweepReport& report, const Shard& shard) {
+  json s = to_json(report);
+  s.erase("seconds");  // the only field that differs between equal runs
+  if (!shard.whole()) s["shard"] = fmt::format("{}/{}", shard.k, shard.n);
+  return json{{"summary", s}}.dump();
+}
+
+ComparisonOutcome comparison_from_json(const json& j, const std::string& file, const std::string& field) {
+  if (!j.is_object()) throw InputError(file, field, "must be an object");
+  ComparisonOutcome c;
+  c.label = text(j, "label", file, field);
+  c.verdict = verdict_or_throw(member(j, "verdict", json::value_t::string, file, field), file, field + ".verdict");
+  c.undefined_quantity = optional_text(j, "undefined_quantity", file, field);
+  c.reason = optional_text(j, "reason", file, field);
+  if (c.verdict == Verdict::Undefined || c.verdict == Verdict::Error) return c;
+  c.lhs = text(j, "lhs", file, field);
+  c.rhs = text(j, "rhs", file, field);
+  c.residual = text(j, "residual", file, field);
+  c.tolerance = optional_text(j, "tolerance", file, field);
+  if (!c.tolerance.empty()) {
+    const auto& b = j.find("relative_error_bound");
+    if (b == j.end() || !b->is_number()) throw InputError(file, field + ".relative_error_bound", "missing or not a number");
+    c.relative_error_bound = b->get<double>();
+    c.tolerance_derivation = optional_text(j, "tolerance_derivation", file, field);
+  }
+  c.trust_route = optional_text(j, "trust_route", file, field);
+  return c;
+}
+
+SweepLine parse_sweep_line(const std::string& line, const std::string& file, long line_number) {
+  const std::string where = fmt::format("line {}", line_number);
+  json j;
+  try {
+    j = json::parse(line);
+  } catch (const json::parse_error& e) {
+    throw InputError(file, where, std::string("not JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw InputError(file, where, "must be a JSON object");
+  SweepLine out;
+  if (j.contains("summary")) {
+    out.summary = member(j, "summary", json::value_t::object, file, where);
+    return out;
+  }
+  const json& seed = j.find("seed") != j.end() && j["seed"].is_number_unsigned() ? j["seed"] : json();
+  if (seed.is_null()) throw InputError(file, where + ".seed", "missing or not an unsigned integer");
+  const long k = member(j, "case", json::value_t::number_integer, file, where).get<long>();
+  const int n = member(j, "n", json::value_t::number_integer, file, where).get<int>();
+  const int index = member(j, "index", json::value_t::number_integer, file, where).get<int>();
+  if (k < 0 || n < 4 || n > 200 || index < 0) throw InputError(file, where, "case, n or index out of range");
+  const auto arithmetic = parse_arithmetic(text(j, "arithmetic", file, where));
+  if (!arithmetic) throw InputError(file, where + ".arithmetic", "unknown arithmetic " + j["arithmetic"].dump());
+  out.arithmetic = *arithmetic;
+  SweepCase c;
+  c.k = k;
+  c.polygon = generate_random_polygon(seed.get<std::uint64_t>(), n, index);
+  if (text(j, "family", file, where) != c.polygon.family)
+    throw InputError(file, where + ".family", "does not match the polygon generated from seed, n and index");
+  for (const auto& [id, v] : member(j, "verdicts", json::value_t::object, file, where).items())
+    c.verdicts[id] = verdict_or_throw(v, file, where + ".verdicts." + id);
+  for (const auto& id : member(j, "not_applicable", json::value_t::array, file, where)) {
+    if (!id.is_string()) throw InputError(file, where + ".not_applicable", "must hold claim ids");
+    c.not_applicable.push_back(id.get<std::string>());
+  }
+  const json& examples = member(j, "examples", json::value_t::array, file, where);
+  for (size_t i = 0; i < examples.size(); ++i) {
+    const std::string at = fmt::format("{}.examples[{}]", where, i);
+    const json& x = examples[i];
+    if (!x.is_object()) throw InputError(file, at, "must be an object");
+    SweepExample e;
+    e.claim_id = text(x, "claim", file, at);
+    e.verdict = verdict_or_throw(member(x, "verdict", json::value_t::string, file, at), file, at + ".verdict");
+    e.polygon = c.polygon;
+    e.headline = comparison_from_json(member(x, "evidence", json::value_t::object, file, at), file, at + ".evidence");
+    e.error = optional_text(x, "error", file, at);
+    const auto v = c.verdicts.find(e.claim_id);
+    if (v == c.verdicts.end() || v->second != e.verdict)
+      throw InputError(file, at, "the example's verdict is not the case's verdict of " + e.claim_id);
+    c.examples.push_back(std::move(e));
+  }
+  out.sweep_case = std::move(c);
+  return out;
+}
+
+}  // namespace linkproof
