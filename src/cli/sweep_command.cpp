@@ -41,7 +41,8 @@ void add_sweep_command(CLI::App& app, Action& action) {
   auto& a = bind_action<SweepArgs>(s, action, run_sweep_command);
   s->add_option("--n", a.n_range, "number of sides, N or A..B (default 4..12)");
   s->add_option("--count", a.count, "cases per n (default 100)");
-  s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)");
+  s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)")
+      ->check(seed_validator());
   s->add_option("--arith", a.arith,
                 "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
   s->add_option("--index", a.index, "replay only this case index");

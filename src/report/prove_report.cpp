@@ -111,7 +111,7 @@ int exit_status(const std::vector<ProofResult>& results) {
 
 int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json) {
   if (json)
-    out << to_json(results).dump(2) << "\n";
+    out << json_text(to_json(results)) << "\n";
   else
     write_text(out, results);
   return exit_status(results);
