@@ -2,6 +2,8 @@
 
 #include <cln/float.h>
 
+#include <optional>
+
 namespace linkproof {
 
 bool ClaimOutcome::is_as_expected(bool strict) const {
@@ -67,6 +69,28 @@ template ClaimOutcome run_claim<Tracked<MpFloat<50>>>(const Claim&, const Polygo
 template ClaimOutcome run_claim<Tracked<MpFloat<100>>>(const Claim&, const PolygonContext<Tracked<MpFloat<100>>>&);
 template ClaimOutcome run_claim<Tracked<MpFloat<1000>>>(const Claim&, const PolygonContext<Tracked<MpFloat<1000>>>&);
 
+namespace {
+
+// Every applicable claim inconclusive with `reason`; the rates stay unknown.
+void mark_out_of_range(PolygonCheck& r, const std::vector<Claim>& catalogue, const std::string& reason) {
+  r.omega.assign(static_cast<std::size_t>(r.n), std::nullopt);
+  r.omega_dot.assign(static_cast<std::size_t>(r.n), std::nullopt);
+  for (const Claim& claim : catalogue) {
+    if (!claim.info.applies_to(r.n)) {
+      r.not_applicable.push_back(claim.info.id);
+      continue;
+    }
+    ClaimOutcome out;
+    out.info = claim.info;
+    out.verdict = Verdict::Inconclusive;
+    out.headline.verdict = Verdict::Inconclusive;
+    out.headline.reason = reason;
+    r.claims.push_back(std::move(out));
+  }
+}
+
+}  // namespace
+
 PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
                            const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a) {
   PolygonCheck r;
@@ -78,8 +102,18 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
   if (r.dead_centre) r.dead_centre_reason = dead_centre_error().reason();
 
   with_scalar_type(a, [&]<class T>() {
-    const PolygonContext<T> ctx = build_polygon_context<T>(engine, polygon, rates);
     r.tolerance_rule = tolerance_rule<T>();
+    std::optional<PolygonContext<T>> built;
+    try {
+      built.emplace(build_polygon_context<T>(engine, polygon, rates));
+    } catch (const cln::floating_point_exception& e) {
+      // The exact input does not fit this arithmetic's exponent range (e.g. 1e400 in double):
+      // no claim can be judged in it, which is inconclusive, not an internal error.
+      mark_out_of_range(r, catalogue, std::string("the input is outside the exponent range of this arithmetic (CLN ") +
+                                          e.what() + "); use --arith exact or a multiprecision arithmetic");
+      return 0;
+    }
+    const PolygonContext<T>& ctx = *built;
     if (a != Arithmetic::Exact) r.determinant = to_text(ctx.closed().has_value() ? ctx.closed().get().D : from_int<T>(0));
     for (int j = 0; j < r.n; ++j) {
       r.omega.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega[j])) : std::nullopt);

@@ -1,5 +1,7 @@
 #include "linkproof/claims/claim_expression.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -24,6 +26,13 @@ REGISTER_FUNCTION(lp_word2, dummy())
 namespace linkproof {
 
 namespace {
+
+// Limits stated in docs/limits.md; each refusal names file:line:column.
+constexpr std::size_t kMaxExpressionCharacters = 20000;
+constexpr int kMaxExpressionNesting = 100;  // GiNaC's parser recurses per bracket and per sign
+constexpr int kMaxUnarySigns = 8;
+constexpr int kMaxExponent = 64;
+constexpr std::size_t kMaxExpressionDegree = 1024;
 
 // --- The atom table ---------------------------------------------------------------------------
 
@@ -92,7 +101,7 @@ class Scanner {
       bound.insert("j");
       binding_ = IndexBinding::ForEachJ;
     }
-    expression(i, bound, /*in_index=*/false);
+    expression(i, bound, /*in_index=*/false, /*depth=*/0);
     if (tokens_[i].kind != Tok::End) fail(tokens_[i].offset, "unexpected '" + tokens_[i].text + "'");
   }
 
@@ -117,6 +126,9 @@ class Scanner {
   }
 
   void tokenize() {
+    if (text_.size() > kMaxExpressionCharacters)
+      fail(0, "the expression has " + std::to_string(text_.size()) + " characters; the limit is " +
+                  std::to_string(kMaxExpressionCharacters) + " (docs/limits.md)");
     size_t i = 0;
     while (i < text_.size()) {
       const char ch = text_[i];
@@ -148,19 +160,46 @@ class Scanner {
       } else if (ch == ',') {
         tokens_.push_back({Tok::Comma, ",", i++});
       } else {
-        fail(i, std::string("unexpected character '") + ch + "'");
+        const auto byte = static_cast<unsigned char>(ch);
+        fail(i, byte < 0x20 || byte >= 0x7f ? fmt::format("unexpected byte 0x{:02x}", byte)
+                                            : std::string("unexpected character '") + ch + "'");
       }
     }
     tokens_.push_back({Tok::End, "end of expression", text_.size()});
   }
 
-  // expression := ['+'|'-'] operand (op ['+'|'-'] operand)*
-  void expression(size_t& i, const std::set<std::string>& bound, bool in_index) {
+  // expression := ['+'|'-']* operand ('^' exponent)* (op ['+'|'-']* operand ('^' exponent)*)*
+  // Returns a bound on the expression's degree (a number counts its digits): what GiNaC would
+  // expand is refused before GiNaC sees it (kMaxExpressionDegree).
+  std::size_t expression(size_t& i, const std::set<std::string>& bound, bool in_index, int depth) {
+    if (depth > kMaxExpressionNesting)
+      fail(tokens_[i].offset, "brackets and calls are nested more than " + std::to_string(kMaxExpressionNesting) +
+                                  " levels deep (docs/limits.md)");
+    std::size_t best = 0, term = 0;
     for (;;) {
-      while (tokens_[i].kind == Tok::Op && (tokens_[i].text == "-" || tokens_[i].text == "+")) ++i;
-      operand(i, bound, in_index);
-      if (tokens_[i].kind != Tok::Op) return;
+      const size_t signs_at = tokens_[i].offset;
+      int signs = 0;
+      while (tokens_[i].kind == Tok::Op && (tokens_[i].text == "-" || tokens_[i].text == "+")) ++i, ++signs;
+      if (signs > kMaxUnarySigns)
+        fail(signs_at, std::to_string(signs) + " signs in a row; at most " + std::to_string(kMaxUnarySigns) +
+                           " are accepted (docs/limits.md)");
+      std::size_t last = operand(i, bound, in_index, depth);
+      term += last;
+      while (tokens_[i].kind == Tok::Op && tokens_[i].text == "^") {
+        const size_t caret = tokens_[i++].offset;
+        const std::size_t e = exponent(i, caret);
+        term += last * e - last;
+        last *= e;
+        if (tokens_[i].kind == Tok::Op && tokens_[i].text == "^")
+          fail(tokens_[i].offset, "a power of a power needs brackets: write (a^b)^c");
+        if (term > kMaxExpressionDegree) break;
+      }
+      if (term > kMaxExpressionDegree)
+        fail(signs_at, "this term has degree (digits of numbers included) above " +
+                           std::to_string(kMaxExpressionDegree) + ": it would expand beyond the budget (docs/limits.md)");
+      if (tokens_[i].kind != Tok::Op) return std::max(best, term);
       const Token& op = tokens_[i++];
+      if (op.text == "+" || op.text == "-") best = std::max(best, term), term = 0;
       if (tokens_[i].kind == Tok::Op && tokens_[i].text != "-" && tokens_[i].text != "+")
         fail(tokens_[i].offset, "'" + tokens_[i].text + "' right after '" + op.text + "': an operand is missing");
       if (tokens_[i].kind == Tok::End || tokens_[i].kind == Tok::Close || tokens_[i].kind == Tok::Comma)
@@ -168,24 +207,49 @@ class Scanner {
     }
   }
 
-  void operand(size_t& i, const std::set<std::string>& bound, bool in_index) {
+  // The exponent after '^': an integer written as a number, 2 or (-1), |e| <= kMaxExponent
+  // (GiNaC would otherwise try 10^(10^10)). Returns |e|.
+  std::size_t exponent(size_t& i, size_t caret) {
+    const auto refuse = [&] {
+      fail(caret, "the exponent of '^' must be an integer from -" + std::to_string(kMaxExponent) + " to " +
+                      std::to_string(kMaxExponent) + " written as a number, as in x^2 or x^(-1) (docs/limits.md)");
+    };
+    const bool bracket = tokens_[i].kind == Tok::Open && tokens_[i].text == "(";
+    if (bracket) ++i;
+    if (tokens_[i].kind == Tok::Op && (tokens_[i].text == "-" || tokens_[i].text == "+")) ++i;
+    if (tokens_[i].kind != Tok::Number || tokens_[i].text.size() > 3) refuse();
+    const std::size_t e = std::stoul(tokens_[i++].text);
+    if (e > static_cast<std::size_t>(kMaxExponent)) refuse();
+    if (bracket) {
+      if (tokens_[i].kind != Tok::Close || tokens_[i].text != ")") refuse();
+      ++i;
+    }
+    if (tokens_[i].kind == Tok::Number || tokens_[i].kind == Tok::Name ||
+        (tokens_[i].kind == Tok::Open && tokens_[i].text == "("))
+      fail(tokens_[i].offset, "an operator is missing before '" + tokens_[i].text + "' (write * for a product)");
+    return std::max<std::size_t>(e, 1);
+  }
+
+  std::size_t operand(size_t& i, const std::set<std::string>& bound, bool in_index, int depth) {
     const Token& t = tokens_[i];
+    std::size_t degree = 1;
     switch (t.kind) {
-      case Tok::Number: ++i; break;
+      case Tok::Number: degree = t.text.size(); ++i; break;
       case Tok::Open: {
         if (t.text == "[") fail(t.offset, "'[' must follow a name that takes an index, as in r[n-1]");
         ++i;
-        expression(i, bound, in_index);
+        degree = expression(i, bound, in_index, depth + 1);
         expect_close(i, '(', t.offset);
         break;
       }
-      case Tok::Name: name(i, bound, in_index); break;
+      case Tok::Name: degree = name(i, bound, in_index, depth); break;
       default: fail(t.offset, t.kind == Tok::End ? "the expression ends where an operand is expected"
                                                  : "'" + t.text + "' where an operand is expected");
     }
     if (tokens_[i].kind == Tok::Number || tokens_[i].kind == Tok::Name ||
         (tokens_[i].kind == Tok::Open && tokens_[i].text == "("))
       fail(tokens_[i].offset, "an operator is missing before '" + tokens_[i].text + "' (write * for a product)");
+    return std::max<std::size_t>(degree, 1);
   }
 
   void expect_close(size_t& i, char open, size_t open_offset) {
@@ -200,7 +264,7 @@ class Scanner {
     ++i;
   }
 
-  void name(size_t& i, const std::set<std::string>& bound, bool in_index) {
+  std::size_t name(size_t& i, const std::set<std::string>& bound, bool in_index, int depth) {
     const Token& t = tokens_[i++];
     const bool call = tokens_[i].kind == Tok::Open;
     if (!call) {
@@ -219,7 +283,7 @@ class Scanner {
       } else if (in_index) {
         fail(t.offset, "'" + t.text + "' inside an index: an index is built from n, j, l and integers");
       }
-      return;
+      return 1;
     }
     const Token& open = tokens_[i++];
     // Count the arguments.
@@ -279,13 +343,15 @@ class Scanner {
         inner.insert(b);
       }
     }
+    std::size_t degree = 1;
     for (;;) {
-      expression(i, inner, indexed);
+      degree = std::max(degree, expression(i, inner, indexed, depth + 1));
       if (tokens_[i].kind == Tok::Comma) { ++i; continue; }
       break;
     }
     expect_close(i, open.text[0], open.offset);
     binding_ = outer;
+    return indexed ? 1 : degree;
   }
 
   const std::string& text_;

@@ -12,6 +12,7 @@
 #include "linkproof/core/error.h"
 #include "linkproof/numerics/bench_study.h"
 #include "linkproof/report/bench_report.h"
+#include "linkproof/report/json_report.h"
 
 namespace linkproof::cli {
 
@@ -68,7 +69,7 @@ int run_bench_command(const BenchArgs& a, std::ostream& out, std::ostream& err) 
       if (!a.json) fmt::print(out, "wrote {}\n", p.string());
   }
   if (a.json)
-    out << to_json(r).dump(2) << "\n";
+    out << json_text(to_json(r)) << "\n";
   else if (a.out_dir.empty())
     out << to_markdown(r);
   return kAsExpected;
@@ -88,7 +89,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   s->add_flag("--quiet", a.quiet, "no progress bar");
   s->add_option("--cases", a.cases, "random polygons for the error-vs-time table (default 3, full 16)");
   s->add_option("--n", a.n, "sides of those polygons (default 5)");
-  s->add_option("--seed", a.seed, "seed of the random polygons (default 1966)");
+  s->add_option("--seed", a.seed, "seed of the random polygons (default 1966)")->check(seed_validator());
   s->add_option("--time-budget-ms", a.time_budget_ms, "timing per route x arithmetic x case, ms (default 1, full 20)");
   s->add_option("--adaptive-cases", a.adaptive_cases, "random pentagons for the adaptive statistics (default 200, full 10000)");
 }

@@ -109,7 +109,7 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, arith);
     check.strict = a.strict;
     if (a.json)
-      out << to_json(check).dump(2) << "\n";
+      out << json_text(to_json(check)) << "\n";
     else
       write_text(out, check, true);
     return exit_status(check);
@@ -147,13 +147,15 @@ void add_check_claim_command(CLI::App& app, Action& action) {
   c->add_option("file", a.file, "claim file (YAML)");
   c->add_option("--n", a.n_range, "sides: N (prove for this n) or A..B (default: every n, searching 4..8)");
   c->add_option("--count", a.count, "random exact instances per n when no proof is found (default 20)");
-  c->add_option("--seed", a.seed, "seed of the counterexample search and the samples (default 1)");
+  c->add_option("--seed", a.seed, "seed of the counterexample search and the samples (default 1)")
+      ->check(seed_validator());
   c->add_option("--scene", a.scene, "check the claims on this scene only (in the arithmetic of --arith)");
   c->add_option("--arith", a.arith,
                 "arithmetic of the --scene check and of the random instances judged when no proof is found: "
                 "exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help); proofs and "
                 "counterexample shrinking are exact");
-  c->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs per claim (default 1)");
+  c->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs per claim (default 1)")
+      ->check(seconds_validator());
   c->add_flag("--vocabulary", a.vocabulary, "print the names a claim may use");
   c->add_flag("--json", a.json, "print JSON");
   c->add_flag("--strict", a.strict,

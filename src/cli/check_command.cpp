@@ -15,6 +15,10 @@ namespace linkproof::cli {
 
 namespace {
 
+/// The largest polygon `check` accepts: the exact check grows like n^4 (0.3 s at n = 10, 7 s at
+/// n = 30, about a minute at n = 50; docs/limits.md). The reader itself allows kMaxSceneJoints.
+constexpr int kMaxCheckSides = 50;
+
 struct CheckArgs {
   std::string scene;
   std::string arith = "exact";
@@ -50,11 +54,15 @@ int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   const std::string text = read_scene_text(a.scene);
   if (is_mechanism_scene_text(text)) return run_mechanism_check(a, arith, text, out);
   const PolygonScene scene = parse_polygon_scene(text, a.scene);
+  if (scene.polygon.n() > kMaxCheckSides)
+    throw InputError(a.scene, "polygon.joints",
+                     "check accepts at most " + std::to_string(kMaxCheckSides) + " joints (it would take minutes; "
+                     "docs/limits.md), got " + std::to_string(scene.polygon.n()));
   GroundTruthEngine engine;
   PolygonCheck check = check_polygon(engine, dijksman1966::catalogue(), scene.name, scene.polygon, scene.rates, arith);
   check.strict = a.strict;
   if (a.json)
-    out << to_json(check).dump(2) << "\n";
+    out << json_text(to_json(check)) << "\n";
   else
     write_text(out, check, !a.no_terms);
   return exit_status(check);

@@ -8,6 +8,7 @@
 // 3 internal error.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -18,5 +19,10 @@ enum ExitCode { kAsExpected = 0, kClaimFailed = 1, kBadInput = 2, kInternalError
 
 /// args excludes the program name.
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+/// The command line parsed and validated without running the work (what the CLI fuzz target
+/// exercises): the exit code run() would return for a bad or finished command line (help,
+/// version, unknown subcommand, invalid option), or nullopt when the subcommand would run.
+std::optional<int> parse_only(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace linkproof::cli

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "linkproof/check/arithmetic.h"
+#include "linkproof/report/json_report.h"
 
 namespace linkproof::cli {
 
@@ -36,7 +37,7 @@ Args& bind_action(CLI::App* sub, Action& action, Run run) {
 template <class Report>
 int print_report(std::ostream& out, const Report& report, bool json, int status) {
   if (json)
-    out << to_json(report).dump(2) << "\n";
+    out << json_text(to_json(report)) << "\n";
   else
     write_text(out, report);
   return status;
@@ -47,6 +48,14 @@ Arithmetic arithmetic_or_throw(const std::string& s);
 
 /// "N" or "A..B" with lo <= A <= B <= hi, or an InputError naming `option`.
 std::pair<int, int> parse_n_range(const std::string& s, const std::string& option, int lo, int hi);
+
+/// CLI11 check for a seed: an unsigned 64-bit integer in decimal digits. "-1" or a value above
+/// 2^64 - 1 is refused (CLI11 alone wraps or clamps them, which breaks replay).
+CLI::Validator seed_validator();
+/// CLI11 check for a time budget: a finite number of seconds from 0 to 3600 (NaN, inf refused).
+CLI::Validator seconds_validator();
+/// CLI11 check for an integer option from lo to hi.
+CLI::Validator int_range_validator(int lo, int hi);
 
 void add_check_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);

@@ -1,4 +1,7 @@
 #include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "command.h"
@@ -32,6 +35,51 @@ std::pair<int, int> parse_n_range(const std::string& s, const std::string& optio
   }
   if (a < lo || b < a || b > hi) throw bad();
   return {a, b};
+}
+
+namespace {
+
+// The whole of `s` read by from_chars as a T, or nullopt.
+template <class T>
+std::optional<T> whole_number(const std::string& s) {
+  T v{};
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+CLI::Validator seed_validator() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        if (s.empty() || s.front() == '-' || s.front() == '+' || !whole_number<std::uint64_t>(s))
+          return "'" + s + "' is not a seed: expected an integer from 0 to 18446744073709551615 (2^64 - 1)";
+        return "";
+      },
+      "SEED");
+}
+
+CLI::Validator seconds_validator() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        const auto v = whole_number<double>(s);
+        if (!v || !std::isfinite(*v) || *v < 0 || *v > 3600)
+          return "'" + s + "' is not a time budget: expected a finite number of seconds from 0 to 3600";
+        return "";
+      },
+      "SECONDS");
+}
+
+CLI::Validator int_range_validator(int lo, int hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& s) -> std::string {
+        const auto v = whole_number<int>(s);
+        if (!v || *v < lo || *v > hi)
+          return "'" + s + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+        return "";
+      },
+      "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
 }  // namespace linkproof::cli

@@ -51,7 +51,8 @@ void add_count_command(CLI::App& app, Action& action) {
   c->add_flag("--eightbar", a.eightbar, "the eight-bar of Fig. 5 (geometry and input of SPEC A8)");
   c->add_option("--polygons", a.polygons,
                 "loops of links for --eightbar, last link fixed (default 1-2-3-4-0,1-5-7-4-0,1-5-6-3-2)");
-  c->add_option("--seed", a.seed, "seed of the random polygons of the rank-2 claims (default 1)");
+  c->add_option("--seed", a.seed, "seed of the random polygons of the rank-2 claims (default 1)")
+      ->check(seed_validator());
   c->add_flag("--json", a.json, "print JSON (docs/count.md)");
   c->add_flag("--strict", a.strict, "a rank that holds only on sample polygons is not as expected (exit 1): for CI");
 }

@@ -57,8 +57,10 @@ void add_prove_command(CLI::App& app, Action& action) {
   p->add_option("--claim", a.claims, "claim id (repeatable; default: every claim), e.g. dijksman1966.eq22 or eq22");
   p->add_option("--n", a.n, "prove for this number of sides only");
   p->add_option("--file", a.file, "claim file (default: the bundled verify/claims/dijksman1966.yaml)");
-  p->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs n = 4, 5, ... per claim (default 1)");
-  p->add_option("--n-max", a.n_max, "stop the per-n ladder at this n");
+  p->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs n = 4, 5, ... per claim (default 1)")
+      ->check(seconds_validator());
+  p->add_option("--n-max", a.n_max, "stop the per-n ladder at this n")
+      ->check(int_range_validator(4, kMaxClaimSides));
   p->add_flag("--json", a.json, "print JSON (the contract in docs/claims.md)");
   p->add_flag("--strict", a.strict,
               "only a proof for the claim's whole range is as expected for a true claim (proved_for and "

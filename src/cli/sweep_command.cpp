@@ -32,7 +32,7 @@ SweepOptions sweep_options_or_throw(const SweepArgs& a) {
 void add_sweep_options(CLI::App* s, SweepArgs& a) {
   s->add_option("--n", a.n_range, "number of sides, N or A..B (default 4..12)");
   s->add_option("--count", a.count, "cases per n (default 100)");
-  s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)");
+  s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)")->check(seed_validator());
   s->add_option("--arith", a.arith,
                 "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
   s->add_option("--out", a.out, "stream every case to FILE (JSON Lines: one case per line, then a summary line)");

@@ -6,6 +6,7 @@
 #include <cln/rational.h>
 #include <cln/real.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -49,10 +50,17 @@ template <>
 long double round_rational<long double>(const Rational& q) {
   // No long double conversion in CLN: go through a 64-bit-mantissa long float, whose digits
   // are exact in long double, then round once more (at most one extra half-ulp of long double).
-  const cln::cl_F f = cln::cl_float(q, cln::float_format(std::numeric_limits<long double>::digits10 + 4));
+  // The value is first scaled by 2^-e into [1/2, 2], so that doubles can carry it whatever its
+  // size (1e400 overflows double but not long double), and scaled back at the end.
+  if (cln::zerop(q)) return 0.0L;
+  const cln::cl_I num = cln::numerator(q), den = cln::denominator(q);
+  const long e = static_cast<long>(cln::integer_length(num)) - static_cast<long>(cln::integer_length(den));
+  const Rational scaled = e >= 0 ? Rational(num) / Rational(cln::ash(den, e)) : Rational(cln::ash(num, -e)) / Rational(den);
+  const cln::cl_F f = cln::cl_float(scaled, cln::float_format(std::numeric_limits<long double>::digits10 + 4));
   const double hi = cln::double_approx(f);
   const double lo = cln::double_approx(f - cln::cl_float(hi, f));
-  return static_cast<long double>(hi) + static_cast<long double>(lo);
+  const long clamped = std::clamp(e, -100000L, 100000L);  // beyond +-16445 the result is inf or 0 anyway
+  return std::ldexp(static_cast<long double>(hi) + static_cast<long double>(lo), static_cast<int>(clamped));
 }
 
 template <class F>

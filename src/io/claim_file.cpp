@@ -41,6 +41,30 @@ PositionMap positions_in_file(const std::string& file_text, const YAML::Mark& ma
   };
 }
 
+constexpr std::size_t kMaxClaimFileNodes = 100000;
+
+/// yaml-cpp keeps the first of two equal keys and `map[key]` reads it: a repeated key anywhere in
+/// a claim file is refused instead (the second `rhs:` would otherwise be ignored silently).
+/// `visits` bounds the walk: aliases can make a small file a huge tree ("billion laughs").
+void refuse_repeated_keys(const YAML::Node& node, const std::string& source, const std::string& where,
+                          std::size_t& visits) {
+  if (++visits > kMaxClaimFileNodes)
+    throw InputError(source, where, "the document expands (through aliases) to more than " +
+                                        std::to_string(kMaxClaimFileNodes) + " nodes (docs/limits.md)");
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      refuse_repeated_keys(node[i], source, where + "[" + std::to_string(i) + "]", visits);
+  } else if (node.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& kv : node) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+      const std::string field = (where.empty() ? "" : where + ".") + yaml_io::shorten(key, yaml_io::kMaxQuoted);
+      if (!seen.insert(key).second) throw InputError(source, field, "field " + yaml_io::backticked(key) + " is given twice");
+      refuse_repeated_keys(kv.second, source, field, visits);
+    }
+  }
+}
+
 class ClaimFileReader {
  public:
   ClaimFileReader(const std::string& text, const std::string& source) : text_(text), source_(source) {}
@@ -84,14 +108,14 @@ class ClaimFileReader {
     const YAML::Node n = map[key];
     if (!n) fail(where + "." + key, "missing");
     if (!n.IsScalar() || n.Scalar().empty()) fail(where + "." + key, "expected a non-empty string");
-    return n.Scalar();
+    return yaml_io::clean_text(n.Scalar());
   }
 
   std::string optional_string(const YAML::Node& map, const std::string& key, const std::string& fallback) const {
     const YAML::Node n = map[key];
     if (!n) return fallback;
     if (!n.IsScalar()) fail(key, "expected a string");
-    return n.Scalar();
+    return yaml_io::clean_text(n.Scalar());
   }
 
   static bool parse_int(const std::string& s, int& v) {
@@ -165,7 +189,7 @@ class ClaimFileReader {
     }
     if (const YAML::Node e = n["note"]) {
       if (!e.IsScalar()) fail(where + ".note", "expected a string");
-      c.info.note = e.Scalar();
+      c.info.note = yaml_io::clean_text(e.Scalar());
     }
     read_range(n["n"], where + ".n", c.info);
     if (const YAML::Node e = n["for_each"]) {
@@ -188,6 +212,8 @@ class ClaimFileReader {
 ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& source) {
   const YAML::Node doc =
       yaml_io::parse_single_document(yaml_text, source, "empty document: expected a map with the field `claims`");
+  std::size_t visits = 0;
+  refuse_repeated_keys(doc, source, "", visits);
   try {
     return ClaimFileReader(yaml_text, source).read(doc);
   } catch (const YAML::Exception& e) {

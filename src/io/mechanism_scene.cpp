@@ -18,6 +18,29 @@ using namespace yaml_io;
 namespace {
 
 class MechanismReader {
+  // A driven link whose joints are all revolute and at one point has zero length: its rotation
+  // moves nothing, and the check would run on an input that drives no motion.
+  void refuse_zero_length_drivers(const MechanismScene& scene) const {
+    const Linkage& g = scene.linkage;
+    for (std::size_t i = 0; i < scene.inputs.size(); ++i) {
+      const MechanismInput& in = scene.inputs[i];
+      if (in.kind != MechanismInput::Kind::Link) continue;
+      std::vector<const LinkageJoint*> on_link;
+      for (int j = 0; j < g.joint_count(); ++j)
+        if (g.joint(j).links[0] == in.index || g.joint(j).links[1] == in.index) on_link.push_back(&g.joint(j));
+      if (on_link.size() < 2) continue;
+      const bool all_revolute_at_one_point = std::all_of(on_link.begin(), on_link.end(), [&](const LinkageJoint* j) {
+        return j->type == JointType::Revolute && j->at.x == on_link.front()->at.x && j->at.y == on_link.front()->at.y;
+      });
+      if (all_revolute_at_one_point)
+        fail(fmt::format("mechanism.inputs[{}].link", i),
+             fmt::format("the driven link {} has zero length: its joints {} and {} are both at ({}, {}); a driven link "
+                         "needs two joints at different points",
+                         backticked(g.link_name(in.index)), backticked(on_link[0]->name), backticked(on_link[1]->name),
+                         format_rational(on_link[0]->at.x), format_rational(on_link[0]->at.y)));
+    }
+  }
+
  public:
   explicit MechanismReader(std::string source) : source_(std::move(source)) {}
 
@@ -29,7 +52,7 @@ class MechanismReader {
     const YAML::Node name = doc["name"];
     if (!name || !name.IsScalar() || name.Scalar().find_first_not_of(" \t\r\n") == std::string::npos)
       fail("name", "expected the scene's name, a non-empty string");
-    scene.name = name.Scalar();
+    scene.name = clean_text(name.Scalar());
     if (const YAML::Node d = doc["description"]; d && !d.IsScalar())
       fail("description", "expected a string (free text), got " + kind_of(d));
     const YAML::Node m = doc["mechanism"];
@@ -47,6 +70,7 @@ class MechanismReader {
       fail("mechanism.joints", problem);
     scene.linkage = Linkage(links_, ground, std::move(joints));
     scene.inputs = read_inputs(m, scene.linkage);
+    refuse_zero_length_drivers(scene);
     scene.points = read_points(m);
     if (const YAML::Node t = m["tolerance"]) {
       scene.tolerance = read_exact_number(t, source_, "mechanism.tolerance", "the closure tolerance");
@@ -65,7 +89,7 @@ class MechanismReader {
       if (!c.IsSequence()) fail("mechanism.catalogue", "expected a list of catalogue names, got " + kind_of(c));
       for (const auto& e : c) {
         if (!e.IsScalar()) fail("mechanism.catalogue", "expected catalogue names (strings), got " + kind_of(e));
-        scene.catalogues.push_back(e.Scalar());
+        scene.catalogues.push_back(clean_text(e.Scalar()));
       }
     }
     return scene;
@@ -92,7 +116,7 @@ class MechanismReader {
   std::string name_of(const YAML::Node& n, const std::string& field, const std::string& what) const {
     if (!n) fail(field, "missing required field: " + what);
     if (!n.IsScalar() || n.Scalar().empty()) fail(field, "expected " + what + " (a non-empty string), got " + kind_of(n));
-    return n.Scalar();
+    return clean_text(n.Scalar());
   }
 
   void read_links(const YAML::Node& m) {

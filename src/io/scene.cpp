@@ -44,7 +44,8 @@ class SceneReader {
       fail("", "expected a map with the fields `name` and `polygon` at the top level, got " +
                    kind_of(doc));
     const auto top = fields(doc, "", {"name", "description", "polygon"},
-                            {"mechanism", "this is a mechanism scene: read it with load_mechanism_scene (io/mechanism_scene.h); `linkproof check` reads both kinds"});
+                            {"mechanism", "this is a mechanism scene (top-level `mechanism`), and a polygon scene (`name`, `polygon`) is "
+                                          "expected here; `linkproof check SCENE` reads both kinds"});
 
     PolygonScene scene;
     scene.source = source_;
@@ -118,7 +119,7 @@ class SceneReader {
     const std::string& s = node->Scalar();
     if (std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }))
       fail("name", "expected a non-empty string, got an empty one");
-    return s;
+    return clean_text(s);
   }
 
   Rational read_number(const YAML::Node& node, const std::string& field, const std::string& what) const {

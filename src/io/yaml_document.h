@@ -18,6 +18,12 @@ inline constexpr std::size_t kMaxProblem = 400;
 
 std::string shorten(std::string_view s, std::size_t max);
 std::string backticked(std::string_view s);
+/// Free text from a file (names, statements, notes) as the program keeps it: control
+/// characters escaped (\n, \t, \r, \xHH) so that a name cannot forge report lines, and bytes
+/// that are not valid UTF-8 escaped as \xHH so that JSON output stays valid. Valid UTF-8
+/// without control characters is returned unchanged.
+std::string clean_text(std::string_view s);
+
 /// "null (an empty value)", "a list", "a map", "the string `...`".
 std::string kind_of(const YAML::Node& node);
 

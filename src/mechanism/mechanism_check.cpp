@@ -1,10 +1,12 @@
 #include "linkproof/mechanism/mechanism_check.h"
 
 #include <Eigen/SVD>
+#include <cln/float.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "linkproof/mechanism/mechanism_vector_route.h"
 #include "linkproof/mechanism/mechanism_closure.h"
@@ -33,6 +35,23 @@ MechanismSolution<T> solve_by_vector_route(const MechanismScene& s, const Linkag
   return solve_mechanism<T>(
       g, inputs, rigid_body_constraint_matrix<T>(g),
       [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd); }, s.source);
+}
+
+// IEEE values can be inf or NaN; CLN long floats throw instead (caught by the caller).
+template <class F>
+bool is_finite_value(const F& x) {
+  if constexpr (std::is_floating_point_v<F>) return std::isfinite(x);
+  return true;
+}
+
+template <class F>
+bool all_finite(const MechanismMotion<F>& m) {
+  const auto finite = [](const std::vector<F>& xs) { return std::all_of(xs.begin(), xs.end(), is_finite_value<F>); };
+  const auto finite_vectors = [](const std::vector<Vec2<F>>& vs) {
+    return std::all_of(vs.begin(), vs.end(), [](const Vec2<F>& v) { return is_finite_value(v.x) && is_finite_value(v.y); });
+  };
+  return finite(m.omega) && finite(m.omega_dot) && finite(m.slide) && finite(m.slide_dot) && finite_vectors(m.joint_v) &&
+         finite_vectors(m.joint_a);
 }
 
 template <class T>
@@ -197,7 +216,27 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
     with_scalar_type(a, [&]<class T>() {
       if constexpr (!ScalarTraits<T>::is_exact) {
         using F = decltype(T{}.v);  // the plain IEEE type of the arithmetic
-        fill_motion(r, s, solve_by_vector_route<F>(s, g, s.inputs).motion);
+        // The exact solve above has accepted mobility and inputs: a floating route that fails
+        // (a rank decided wrongly, an overflow) is a limit of the arithmetic, not bad input.
+        std::string failure;
+        try {
+          const auto floating = solve_by_vector_route<F>(s, g, s.inputs);
+          if (floating.mobility == truth.mobility && floating.rank == truth.rank && all_finite(floating.motion))
+            fill_motion(r, s, floating.motion);
+          else
+            failure = fmt::format("rank {} and mobility {} in floating point (exact: rank {}, mobility {}), or a "
+                                  "non-finite value",
+                                  floating.rank, floating.mobility, truth.rank, truth.mobility);
+        } catch (const Error& e) {
+          failure = e.what();
+        } catch (const cln::floating_point_exception& e) {
+          failure = e.what();
+        }
+        if (!failure.empty()) {
+          r.arithmetic_note = std::string(to_string(a)) + " could not solve this configuration (" + failure +
+                              "); the motion shown is the exact one";
+          fill_motion(r, s, truth.motion);
+        }
       }
     });
   }

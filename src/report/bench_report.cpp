@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "linkproof/core/error.h"
+#include "linkproof/report/atomic_file.h"
 #include "svg_plot.h"
+#include "linkproof/report/json_report.h"
 
 namespace linkproof {
 
@@ -249,13 +250,11 @@ std::vector<std::filesystem::path> write_bench_files(const BenchResult& r, const
   std::vector<std::filesystem::path> written;
   const auto write = [&](const std::string& name, const std::string& text) {
     const std::filesystem::path p = dir / name;
-    std::ofstream out(p);
-    out << text;
-    if (!out) throw InputError("<command line>", "--out", "cannot write '" + p.string() + "'");
+    write_file_atomically(p, text, "--out");
     written.push_back(p);
   };
   write("bench.md", to_markdown(r));
-  write("bench.json", to_json(r).dump(2) + "\n");
+  write("bench.json", json_text(to_json(r)) + "\n");
   write("pareto.svg", pareto_svg(r));
   for (const FamilyCurve& c : r.families) write("family_" + c.family->name + ".svg", family_svg(c));
   return written;

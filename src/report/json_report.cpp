@@ -142,4 +142,8 @@ json to_json(const SweepReport& s) {
           {"exit_status", s.exit_status()}};
 }
 
+std::string json_text(const nlohmann::json& j) {
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace linkproof

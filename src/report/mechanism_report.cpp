@@ -72,6 +72,7 @@ json to_json(const MechanismCheck& c) {
   const json summary = claims_summary_json(c.claims);
   return {{"scene", c.scene},
           {"arithmetic", std::string(to_string(c.arithmetic))},
+          {"arithmetic_note", c.arithmetic_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.arithmetic_note)},
           {"mobility", c.mobility},
           {"grubler_mobility", c.grubler},
           {"rank", c.rank},
@@ -95,6 +96,7 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
   fmt::print(out, "scene {} ({} arithmetic)\n", c.scene, to_string(c.arithmetic));
   fmt::print(out, "mobility {} (Gruebler {}), {} loops, {} unknowns, rank {}, condition {:.3g}, closure residual {}\n\n",
              c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, c.closure_residual);
+  if (!c.arithmetic_note.empty()) fmt::print(out, "note: {}\n\n", c.arithmetic_note);
   fmt::print(out, "{:<10} {:>28} {:>28}\n", "link", "omega", "omega_dot");
   for (size_t l = 0; l < c.link_names.size(); ++l)
     fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], c.omega[l], c.omega_dot[l]);

@@ -127,7 +127,7 @@ int exit_status(const std::vector<ProofResult>& results, bool strict) {
 
 int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict) {
   if (json)
-    out << to_json(results, strict).dump(2) << "\n";
+    out << json_text(to_json(results, strict)) << "\n";
   else
     write_text(out, results, strict);
   return exit_status(results, strict);

@@ -238,7 +238,7 @@ TEST(ParsePolygonScene, RejectsUnknownPolygonField) {
 
 TEST(ParsePolygonScene, RejectsMechanismScenesWithItsOwnMessage) {
   EXPECT_TRUE(FailsWith("name: eight-bar\nmechanism:\n  links: 8\n", "mechanism",
-                        {"this is a mechanism scene: read it with load_mechanism_scene"}));
+                        {"this is a mechanism scene (top-level `mechanism`)", "`linkproof check SCENE` reads both kinds"}));
   EXPECT_TRUE(FailsWith("zzz: 1\nmechanism: {}\n", "mechanism", {"mechanism scene"}));
 }
 

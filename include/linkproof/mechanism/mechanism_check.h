@@ -59,7 +59,12 @@ struct MechanismCatalogue {
 struct MechanismCheck {
   std::string scene;
   Arithmetic arithmetic = Arithmetic::Exact;
+  /// Mobility and rank are decided exactly whatever `arithmetic` says.
   int mobility = 0, grubler = 0, rank = 0, loops = 0, unknowns = 0;
+  /// Set when the floating-point route could not solve the configuration (its rank decision
+  /// disagreed with the exact one, or its exponent range was exceeded, e.g. coordinates near
+  /// 1e200 in double): the reason; the motion shown is then the exact one.
+  std::string arithmetic_note;
   std::vector<std::string> link_names;
   /// Text per link (relative to the ground), per joint, per tracer point.
   std::vector<std::string> omega, omega_dot;

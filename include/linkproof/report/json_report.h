@@ -19,4 +19,9 @@ nlohmann::json to_json(const ComparisonOutcome& c);
 nlohmann::json to_json(const ClaimOutcome& c);
 nlohmann::json to_json(const SweepReport& sweep);
 
+/// `j` printed with an indent of 2, bytes that are not valid UTF-8 replaced by U+FFFD: the
+/// readers already escape such bytes in names and statements (io), this is the last guard so that
+/// printing JSON never throws.
+std::string json_text(const nlohmann::json& j);
+
 }  // namespace linkproof

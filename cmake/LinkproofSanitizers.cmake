@@ -1,0 +1,16 @@
+# Sanitizer and fuzzing builds (docs/fuzzing.md). Instrumentation must cover every linkproof
+# object, so these options add directory-wide compile and link options (only when switched on).
+#   LINKPROOF_SANITIZE  ASan + UBSan (any error aborts: -fno-sanitize-recover), e.g. a Debug
+#                       build of the unit tests in CI (scripts/run_sanitizer_tests.sh);
+#   LINKPROOF_FUZZ      the same plus libFuzzer coverage (clang only) and the targets of tests/fuzz.
+if(LINKPROOF_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "LINKPROOF_FUZZ needs clang (libFuzzer): configure with -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  set(LINKPROOF_SANITIZE ON)
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+if(LINKPROOF_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+endif()

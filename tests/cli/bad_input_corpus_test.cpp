@@ -1,0 +1,228 @@
+// The bad-input corpus of issue 12: one row per hostile input (every class of the issue's
+// table: crash, exit 3 on user input, unbounded work, wrong answer, silent acceptance, output,
+// messages), with the exit code and a fragment of the message the program must give. Each row
+// failed before the hardening (a crash, a hang, exit 0 or 3, or an unhelpful message).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli_run.h"
+
+namespace linkproof {
+namespace {
+
+std::string source_file(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "bad_input_" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+std::string polygon_scene(const std::string& name, const std::string& joints) {
+  return "name: " + name + "\npolygon:\n  joints: " + joints + "\n  omega: [2, -1]\n  omega_dot: [1, 3]\n";
+}
+const std::string kPentagonJoints = "[[0, 0], [1, 4], [5, 5], [7, 1], [3, -2]]";
+
+std::string claim_file(const std::string& rhs) {
+  return "claims:\n  - id: c1\n    source: test\n    statement: s\n    lhs: omega_out\n    rhs: \"" + rhs + "\"\n";
+}
+
+// The seed-001 four-bar with its crank O2-A given as `crank_a` and every coordinate times `scale`.
+std::string fourbar(const std::string& a, const std::string& b, const std::string& o4) {
+  return "name: fourbar\nmechanism:\n  ground: \"1\"\n  joints:\n"
+         "    - {name: O2, type: revolute, links: [\"1\", \"2\"], at: [0, 0]}\n"
+         "    - {name: A,  type: revolute, links: [\"2\", \"3\"], at: " + a + "}\n"
+         "    - {name: B,  type: revolute, links: [\"3\", \"4\"], at: " + b + "}\n"
+         "    - {name: O4, type: revolute, links: [\"4\", \"1\"], at: " + o4 + "}\n"
+         "  inputs:\n    - {link: \"2\", omega: 2, omega_dot: 5}\n";
+}
+
+struct Case {
+  std::string name;
+  std::function<std::vector<std::string>()> args;  // builds its files when run
+  int code;
+  std::string err_fragment;  // expected in stderr ("" = nothing required)
+  std::string out_fragment;  // expected in stdout ("" = nothing required)
+  std::string out_absent;    // must not appear in stdout ("" = nothing required)
+};
+
+std::ostream& operator<<(std::ostream& o, const Case& c) { return o << c.name; }
+
+const std::vector<Case>& corpus() {
+  static const std::vector<Case> cases = {
+      // --- crash
+      {"NestedParentheses8000",
+       [] { return std::vector<std::string>{"check-claim", write_temp("paren.yaml", claim_file(std::string(8000, '(') + "omega_out" + std::string(8000, ')')))}; },
+       2, "nested more than 100 levels", "", ""},
+      {"LeadingMinusSigns20000",
+       [] { return std::vector<std::string>{"check-claim", write_temp("minus.yaml", claim_file(std::string(20000, '-') + "omega_out"))}; },
+       2, "the limit is 20000", "", ""},
+      {"LeadingMinusSigns100",
+       [] { return std::vector<std::string>{"check-claim", write_temp("minus100.yaml", claim_file(std::string(100, '-') + "omega_out"))}; },
+       2, "100 signs in a row", "", ""},
+      // --- exit 3 on user input
+      {"Huge1e400WithLongDouble",
+       [] { return std::vector<std::string>{"check", write_temp("e400.yaml", polygon_scene("big", "[[0, 0], [1e400, 4], [5, 5], [7, 1], [3, -2]]")), "--arith", "long-double"}; },
+       0, "", "long double", ""},
+      {"Huge1e400WithDoubleIsInconclusive",
+       [] { return std::vector<std::string>{"check", write_temp("e400d.yaml", polygon_scene("big", "[[0, 0], [1e400, 4], [5, 5], [7, 1], [3, -2]]")), "--arith", "double"}; },
+       0, "", "a side overflowed", ""},
+      {"InvalidUtf8InSceneNameWithJson",
+       [] { return std::vector<std::string>{"check", write_temp("utf8.yaml", polygon_scene("\"pent\xff\xfe\"", kPentagonJoints)), "--json"}; },
+       0, "", "pent\\\\xff\\\\xfe", ""},
+      {"InvalidUtf8InClaimStatementWithJson",
+       [] {
+         return std::vector<std::string>{
+             "check-claim",
+             write_temp("utf8claim.yaml", "claims:\n  - id: c1\n    source: test\n    statement: \"s \xff\"\n    lhs: omega_out\n    rhs: omega_out\n"),
+             "--scene", source_file("verify/scenes/pentagon.yaml"), "--json"};
+       },
+       0, "", "s \\\\xff", ""},
+      // --- unbounded work
+      {"ExponentTenToTheTenToTheTen",
+       [] { return std::vector<std::string>{"check-claim", write_temp("pow1.yaml", claim_file("10^(10^10)"))}; },
+       2, "exponent of '^' must be an integer from -64 to 64", "", ""},
+      {"ExponentTwoToTheTwoToThe30",
+       [] { return std::vector<std::string>{"check-claim", write_temp("pow2.yaml", claim_file("2^(2^30)"))}; },
+       2, "exponent of '^'", "", ""},
+      {"NestedPowersBeyondTheDegreeBudget",
+       [] { return std::vector<std::string>{"check-claim", write_temp("pow4.yaml", claim_file("((omega_out^64)^64)^64"))}; },
+       2, "degree", "", ""},
+      {"DevZero", [] { return std::vector<std::string>{"check", "/dev/zero"}; }, 2, "larger than the limit", "", ""},
+      {"TenMegabyteScene",
+       [] {
+         std::string joints = "[";
+         for (int i = 0; i < 700000; ++i) joints += "[" + std::to_string(i) + ", " + std::to_string(i % 977) + "], ";
+         joints += "[0, 1]]";
+         return std::vector<std::string>{"check", write_temp("10mb.yaml", polygon_scene("big", joints))};
+       },
+       2, "larger than the limit", "", ""},
+      {"OneMegabyteInteger",
+       [] { return std::vector<std::string>{"check", write_temp("1mb.yaml", polygon_scene("big", "[[0, 0], [" + std::string(1000000, '7') + ", 4], [5, 5], [7, 1], [3, -2]]"))}; },
+       2, "the limit is 200", "", ""},
+      {"LadderSecondsNaN",
+       [] { return std::vector<std::string>{"prove", "--claim", "eq22", "--ladder-seconds", "nan"}; },
+       2, "not a time budget", "", ""},
+      {"LadderSecondsInfinityInCheckClaim",
+       [] { return std::vector<std::string>{"check-claim", write_temp("ok.yaml", claim_file("omega_out")), "--ladder-seconds", "inf"}; },
+       2, "not a time budget", "", ""},
+      {"PolygonAboveTheCheckLimit",
+       [] {
+         const int n = 51;
+         std::string joints = "[", rates = "[";
+         for (int i = 0; i < n; ++i) joints += (i ? ", [" : "[") + std::to_string(i) + ", " + std::to_string(i * i) + "]";
+         for (int j = 0; j < n - 3; ++j) rates += (j ? ", " : "") + std::string("1");
+         const std::string text = "name: big\npolygon:\n  joints: " + joints + "]\n  omega: " + rates + "]\n  omega_dot: " + rates + "]\n";
+         return std::vector<std::string>{"check", write_temp("n51.yaml", text)};
+       },
+       2, "at most 50 joints", "", ""},
+      // --- silent acceptance
+      {"DuplicateKeyInClaimFile",
+       [] {
+         return std::vector<std::string>{
+             "check-claim", write_temp("dup.yaml", "claims:\n  - id: c1\n    source: t\n    statement: s\n    lhs: omega_out\n    rhs: omega_out\n    rhs: 2*omega_out\n")};
+       },
+       2, "`rhs` is given twice", "", ""},
+      {"SeedMinusOne", [] { return std::vector<std::string>{"sweep", "--n", "5", "--count", "1", "--seed", "-1"}; }, 2, "not a seed", "", ""},
+      {"SeedAbove2To64",
+       [] { return std::vector<std::string>{"sweep", "--n", "5", "--count", "1", "--seed", "18446744073709551616"}; },
+       2, "not a seed", "", ""},
+      {"ProveNMaxNegative", [] { return std::vector<std::string>{"prove", "--claim", "eq22", "--n-max", "-5"}; }, 2, "--n-max", "", ""},
+      {"ZeroLengthCrank",
+       [] { return std::vector<std::string>{"check", write_temp("crank.yaml", fourbar("[0, 0]", "[11, 10]", "[11, 0]"))}; },
+       2, "zero length", "", ""},
+      // --- wrong answer: the floating route must not overrule the exact mobility
+      {"MechanismNear1e200InDouble",
+       [] { return std::vector<std::string>{"check", write_temp("e200.yaml", fourbar("[3e200, 4e200]", "[11e200, 10e200]", "[11e200, 0]")), "--arith", "double"}; },
+       0, "", "the motion shown is the exact one", ""},
+      // --- output
+      {"ControlCharactersInSceneName",
+       [] { return std::vector<std::string>{"check", write_temp("ctrl.yaml", polygon_scene("\"pent\\nFAKE: all claims hold\\e[31m\"", kPentagonJoints))}; },
+       0, "", "pent\\nFAKE: all claims hold\\x1b[31m", "\nFAKE"},
+      {"FailedRunWithJsonPrintsAnErrorObject",
+       [] { return std::vector<std::string>{"check", "/nonexistent/scene.yaml", "--json"}; },
+       2, "cannot read file", "\"exit_status\": 2", ""},
+      // --- messages
+      {"UnknownSubcommandWithArguments", [] { return std::vector<std::string>{"report", "x.yaml"}; }, 2, "unknown subcommand 'report'", "", ""},
+      {"TabInIndentation",
+       [] { return std::vector<std::string>{"check", write_temp("tab.yaml", "name: p\npolygon:\n\tjoints: " + kPentagonJoints + "\n  omega: [2, -1]\n  omega_dot: [1, 3]\n")}; },
+       2, "tab character", "", ""},
+      {"NulByte",
+       [] { return std::vector<std::string>{"check", write_temp("nul.yaml", polygon_scene(std::string("\"pe\0nt\"", 7), kPentagonJoints))}; },
+       2, "NUL byte", "", ""},
+      {"ChainedPowerMessage",
+       [] { return std::vector<std::string>{"check-claim", write_temp("pow3.yaml", claim_file("10^10^10"))}; },
+       2, "a power of a power needs brackets", "", ""},
+      {"MechanismSceneGivenToScene",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("ok2.yaml", claim_file("omega_out")), "--scene",
+                                         source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
+       },
+       2, "this is a mechanism scene (top-level `mechanism`)", "", ""},
+  };
+  return cases;
+}
+
+class BadInputCorpus : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BadInputCorpus, ExitsWithTheStatedCodeAndMessage) {
+  const Case& c = GetParam();
+  const test::CliRun r = test::run_cli(c.args());
+  EXPECT_EQ(r.code, c.code) << "stderr: " << r.err.substr(0, 2000) << "\nstdout: " << r.out.substr(0, 2000);
+  if (!c.err_fragment.empty()) {
+    EXPECT_NE(r.err.find(c.err_fragment), std::string::npos) << r.err.substr(0, 2000);
+  }
+  if (!c.out_fragment.empty()) {
+    EXPECT_NE(r.out.find(c.out_fragment), std::string::npos) << r.out.substr(0, 4000);
+  }
+  if (!c.out_absent.empty()) {
+    EXPECT_EQ(r.out.find(c.out_absent), std::string::npos) << r.out.substr(0, 4000);
+  }
+  EXPECT_NE(r.code, 3) << "user input must never give an internal error";
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue12, BadInputCorpus, ::testing::ValuesIn(corpus()),
+                         [](const ::testing::TestParamInfo<Case>& param) { return param.param.name; });
+
+// --json: every failed run prints one JSON object with the error's place and kind.
+TEST(ErrorsAsData, JsonErrorNamesFileLineColumnAndField) {
+  const std::string path = write_temp("json_err.yaml", claim_file("omega_out + bogus"));
+  const test::CliRun r = test::run_cli({"check-claim", path, "--json"});
+  ASSERT_EQ(r.code, 2) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["exit_status"], 2);
+  EXPECT_EQ(j["error"]["kind"], "input");
+  EXPECT_EQ(j["error"]["file"], path);
+  EXPECT_EQ(j["error"]["line"], 6);
+  EXPECT_EQ(j["error"]["column"], 23);
+  EXPECT_EQ(j["error"]["field"], "claims[0].rhs");
+  EXPECT_NE(j["error"]["message"].get<std::string>().find("unknown name 'bogus'"), std::string::npos);
+}
+
+TEST(ErrorsAsData, JsonErrorOfACommandLineProblem) {
+  const test::CliRun r = test::run_cli({"sweep", "--seed", "-1", "--json"});
+  ASSERT_EQ(r.code, 2) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["error"]["file"], "<command line>");
+  EXPECT_TRUE(j["error"]["line"].is_null());
+}
+
+// `check ... --json > /dev/full` exited 0: the report never reached its reader.
+TEST(Outputs, AFailedWriteToStandardOutputIsExitTwo) {
+  std::ofstream full("/dev/full");
+  ASSERT_TRUE(full.is_open());
+  std::ostringstream err;
+  const int code =
+      cli::run({"check", source_file("verify/scenes/pentagon.yaml"), "--json"}, full, err);
+  EXPECT_EQ(code, 2);
+  EXPECT_NE(err.str().find("cannot write the report"), std::string::npos) << err.str();
+}
+
+}  // namespace
+}  // namespace linkproof
