@@ -1,5 +1,6 @@
 #include "linkproof/check/inconclusive_cause.h"
 
+#include <cln/float.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -17,6 +18,19 @@ template <class F>
 bool reached(const Tracked<F>& x) {
   using TT = TrackedTraits<F>;
   return TT::is_unbounded(x.e) || !TT::is_positive(TT::margin(x.v, x.e));
+}
+
+/// Is the bound wider than sqrt(u) |value|, the judge's limit (check/judge.h)? Decided exactly.
+template <class F>
+bool too_wide(const Tracked<F>& x) {
+  using TT = TrackedTraits<F>;
+  if constexpr (std::is_floating_point_v<F>) {
+    return x.e > std::sqrt(TT::unit_roundoff()) * std::abs(x.v);  // sqrt(u) rounded: a policy, not a bound
+  } else {
+    // u = 2^-p with p even: sqrt(u) |v| = |v| 2^-(p/2) exactly.
+    const cln::cl_F limit = cln::scale_float(cln::abs(x.v.value()), -static_cast<long>(F::precision_bits() / 2));
+    return x.e.to_float(F::format()) > limit;
+  }
 }
 
 /// bound / |value| as a double, for display only.
@@ -43,7 +57,7 @@ struct Search {
   void visit(const Tracked<F>& x, const std::string& name, InconclusiveCause::Kind kind) {
     if (found) return;
     const double rel = relative_bound(x);
-    if (reached(x)) {
+    if (reached(x) || too_wide(x)) {
       cause = {kind, name, rel};
       found = true;
     } else if (rel > cause.relative_bound) {
@@ -66,13 +80,13 @@ std::string InconclusiveCause::describe() const {
   switch (kind) {
     case Kind::DeadCentre:
       return fmt::format(
-          "the quantity: {}, whose bound reached its magnitude ({:.3g} of it): near the dead centre every route "
+          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): near the dead centre every route "
           "divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, SPEC A6), so no floating-point route is better; exact "
           "arithmetic (--arith exact) or a longer precision (--arith mp1000) decides",
           quantity, relative_bound);
     case Kind::Construction:
       return fmt::format(
-          "the quantity: {}, whose bound reached its magnitude ({:.3g} of it): the construction loses digits near "
+          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): the construction loses digits near "
           "its pole (SPEC A6) while the closed forms and the engine keep full accuracy; exact arithmetic "
           "(--arith exact) decides",
           quantity, relative_bound);
@@ -80,7 +94,7 @@ std::string InconclusiveCause::describe() const {
       break;
   }
   return fmt::format(
-      "no quantity the claim reads has a bound that reached its magnitude{}: the digits were lost in the claim's "
+      "no quantity the claim reads has an error bound beyond sqrt(u) of its magnitude{}: the digits were lost in the claim's "
       "own arithmetic (cancellation between its terms); exact arithmetic (--arith exact) or a longer precision decides",
       quantity.empty() ? std::string() : fmt::format(" (the widest is {}, {:.3g} of it)", quantity, relative_bound));
 }

@@ -11,9 +11,10 @@
 //   2. the construction of each four-bar j it reads: Q_j, P'_j, i_{n-1,j}, i_{n-2,j},
 //      cot beta_j, cot gamma_j, lambda_j, mu_j (near a pole of the construction only the
 //      construction loses: the closed forms and the engine keep full accuracy).
-// The first whose bound reached its magnitude (bound >= |value|, or unbounded) is the cause. If
-// none did, the digits were lost in the claim's own arithmetic (cancellation between its
-// terms), and the widest quantity read is reported for information.
+// The first whose bound is beyond sqrt(u) of its magnitude (the judge's limit), or reached it
+// (unbounded), is the cause: everything computed from it inherits at least that loss. If none
+// is, the digits were lost in the claim's own arithmetic (cancellation between its terms), and
+// the widest quantity read is reported for information.
 #pragma once
 
 #include <string>
@@ -25,8 +26,8 @@ namespace linkproof {
 struct InconclusiveCause {
   enum class Kind { DeadCentre, Construction, OwnArithmetic };
   Kind kind = Kind::OwnArithmetic;
-  /// The quantity whose bound reached its magnitude ("D = r_{n-2} x r_{n-1}", "cot beta_2 of
-  /// four-bar 2 (construction)"); for OwnArithmetic, the widest quantity read, or empty.
+  /// The quantity whose bound is beyond sqrt(u) of its magnitude ("D = r_{n-2} x r_{n-1}",
+  /// "cot beta_2 of four-bar 2 (construction)"); for OwnArithmetic, the widest one read, or empty.
   std::string quantity;
   double relative_bound = 0;  ///< bound / |value| of that quantity (display; +inf if unbounded)
   /// One sentence for trust_route: the quantity and what decides instead.
