@@ -167,11 +167,14 @@ void BM_TapeMotion(benchmark::State& state) {
 }
 
 using TrackedDouble = Tracked<double>;
+using TrackedLongDouble = Tracked<long double>;
 
 BENCHMARK(BM_Eq22Double)->Arg(5)->Arg(12)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Eq22ClosedFormsDouble)->Arg(5)->Arg(12)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(BM_ClosedFormMotion, double)->Arg(5)->Arg(12)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(BM_ClosedFormMotion, TrackedDouble)->Arg(5)->Arg(12)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_ClosedFormMotion, long double)->Arg(5)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_TEMPLATE(BM_ClosedFormMotion, TrackedLongDouble)->Arg(5)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(BM_ClosedFormMotion, Rational)->Arg(5)->Arg(12)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(BM_TapeMotion, double)->Arg(5)->Arg(12)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_TEMPLATE(BM_TapeMotion, TrackedDouble)->Arg(5)->Arg(12)->Arg(100)->Unit(benchmark::kMicrosecond);

@@ -4,6 +4,8 @@
 
 #include <optional>
 
+#include "linkproof/check/inconclusive_cause.h"
+
 namespace linkproof {
 
 bool ClaimOutcome::is_as_expected(bool strict) const {
@@ -11,6 +13,24 @@ bool ClaimOutcome::is_as_expected(bool strict) const {
   if (info.expected == Expectation::Holds) return strict ? verdict == Verdict::Holds : verdict != Verdict::Fails;
   return true;
 }
+
+namespace {
+/// Adds the quantity that made each inconclusive comparison inconclusive to its trust_route
+/// (one re-evaluation of the claim, only when something is inconclusive).
+template <class T>
+void name_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context, ClaimOutcome& out) {
+  std::optional<InconclusiveCause> cause;
+  for (auto* group : {&out.instances, &out.terms})
+    for (ComparisonOutcome& c : *group) {
+      if (c.verdict != Verdict::Inconclusive || c.inconclusive_side.empty()) continue;
+      if (!cause) cause = find_inconclusive_cause(claim, context);
+      if (cause->kind != InconclusiveCause::Kind::OwnArithmetic) c.inconclusive_quantity = cause->quantity;
+      c.trust_route = c.inconclusive_side + ": " +
+                      (c.inconclusive_side == "both" ? "both sides' error bounds are as wide" : "its error bound is the wider one") +
+                      "; " + cause->describe();
+    }
+}
+}  // namespace
 
 template <class T>
 ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
@@ -28,6 +48,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
       v = combine(v, out.terms.back().verdict);
     }
     out.verdict = v;
+    if constexpr (!ScalarTraits<T>::is_exact) name_inconclusive_cause(claim, context, out);
     if (out.instances.empty()) {
       out.verdict = Verdict::Error;
       out.error = "the claim produced no comparison";

@@ -54,8 +54,15 @@ struct JudgeOps {
   static bool radius_exceeds(const F& e, const F& t) { return e > t; }
   static F sqrt_u_times(const F& scale) { return std::sqrt(TrackedTraits<F>::unit_roundoff()) * scale; }
   static std::string radius_text(const F& e) { return format_float(e); }
+  /// e / scale rounded upward, then to a double rounded upward (docs/check.md promises a bound).
   static double relative(const F& e, const F& scale) {
-    return scale > 0 ? static_cast<double>(e / scale) : (e == 0 ? 0.0 : HUGE_VAL);
+    if (!(scale > 0)) return e == 0 ? 0.0 : HUGE_VAL;
+    return round_up_to_double(TrackedTraits<F>::div_up(e, scale));
+  }
+  /// bound / |value| (display; +inf for an unbounded or non-finite side or a zero midpoint).
+  static double relative_to_own(const Tracked<F>& x) {
+    if (!std::isfinite(x.v) || !std::isfinite(x.e)) return HUGE_VAL;
+    return x.e == 0 ? 0.0 : x.v == 0 ? HUGE_VAL : static_cast<double>(x.e / std::abs(x.v));
   }
   static double condition(const Tracked<F>& x) {
     const F u = TrackedTraits<F>::unit_roundoff();
@@ -81,6 +88,12 @@ struct JudgeOps<MpFloat<D>> {
   static double relative(const WideBound& e, const F& scale) {
     if (cln::zerop(scale.value())) return e.is_zero() ? 0.0 : HUGE_VAL;
     return (e / WideBound::from_float_down(scale.value())).to_double_up();
+  }
+  static double relative_to_own(const Tracked<F>& x) {
+    if (x.e.is_infinite()) return HUGE_VAL;
+    if (x.e.is_zero()) return 0.0;
+    const WideBound m = WideBound::from_float_down(x.v.value());
+    return m.is_zero() ? HUGE_VAL : (x.e / m).to_double_up();
   }
   static double condition(const Tracked<F>& x) {
     if (x.e.is_zero()) return 0.0;
@@ -122,12 +135,17 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
       "error bound (inputs rounded from the exact scene, every operation's rounding), i.e. u times the "
       "evaluation's condition: condition(lhs) = {:.3g}, condition(rhs) = {:.3g}, u = 2^-{}",
       out.tolerance, short_text(l.e), short_text(r.e), cond_l, cond_r, TT::precision_bits());
+  // The side whose bound is the wider relative to its own magnitude (an unbounded or
+  // non-finite side is the widest); the claim runner adds the quantity (check/inconclusive_cause.h).
   const auto set_trust = [&] {
+    const double rel_l = Ops::relative_to_own(l), rel_r = Ops::relative_to_own(r);
+    out.inconclusive_side = rel_l == rel_r ? "both" : rel_l > rel_r ? "lhs" : "rhs";
     out.trust_route = fmt::format(
-        "exact arithmetic (--arith exact) decides this comparison; in floating point trust the {} side "
-        "(condition {:.3g} against {:.3g}): near a pole of the construction the closed forms and the direct "
-        "solve keep full accuracy while the construction loses digits (SPEC A6)",
-        cond_l <= cond_r ? "lhs" : "rhs", std::min(cond_l, cond_r), std::max(cond_l, cond_r));
+        "{}: {} (bound {:.3g} of its magnitude against {:.3g}); exact arithmetic (--arith exact) decides this "
+        "comparison",
+        out.inconclusive_side,
+        out.inconclusive_side == "both" ? "both sides' bounds are as wide" : "its error bound is the wider one",
+        std::max(rel_l, rel_r), std::min(rel_l, rel_r));
   };
   if (Ops::any_non_finite(l.v, r.v, res.v)) {
     out.verdict = Verdict::Inconclusive;

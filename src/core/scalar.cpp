@@ -46,21 +46,47 @@ double round_rational<double>(const Rational& q) {
   return best;
 }
 
+namespace {
+
+/// 2^k as an exact rational.
+Rational power_of_two(long k) {
+  return k >= 0 ? Rational(cln::ash(cln::cl_I(1), k)) : Rational(1) / cln::ash(cln::cl_I(1), -k);
+}
+
+/// q correctly rounded to F (to nearest, ties to even) over F's whole range, subnormals and
+/// overflow included, by integer arithmetic only: |q| in [2^(e-1), 2^e) has the quantum
+/// (spacing of F there) 2^(max(e, min_exponent) - p), and the rounded value is the nearest
+/// integer multiple of it.
+template <class F>
+F round_by_integers(const Rational& q) {
+  using L = std::numeric_limits<F>;
+  if (cln::zerop(q)) return F(0);
+  const Rational a = cln::abs(q);
+  // a lies in [2^(e-1), 2^(e+1)) for e = length(numerator) - length(denominator).
+  long e = static_cast<long>(cln::integer_length(cln::numerator(a))) -
+           static_cast<long>(cln::integer_length(cln::denominator(a)));
+  if (a >= power_of_two(e)) ++e;
+  long quantum = std::max<long>(e, L::min_exponent) - L::digits;
+  cln::cl_I m = cln::round1(a / power_of_two(quantum));  // ties to even; m <= 2^p
+  if (m == cln::ash(cln::cl_I(1), L::digits)) {             // rounded up to the next binade
+    m = cln::ash(cln::cl_I(1), L::digits - 1);
+    ++quantum;
+  }
+  if (quantum + L::digits > L::max_exponent) return cln::minusp(q) ? -L::infinity() : L::infinity();
+  // m < 2^p <= 2^64: two 32-bit halves, each exact in F, and m 2^quantum is representable.
+  const F high = static_cast<F>(cln::cl_I_to_ulong(cln::ash(m, -32)));
+  const F low = static_cast<F>(cln::cl_I_to_ulong(cln::logand(m, cln::cl_I(0xffffffffL))));
+  const F r = std::ldexp(high * F(4294967296.0) + low, static_cast<int>(quantum));
+  return cln::minusp(q) ? -r : r;
+}
+
+}  // namespace
+
+/// Correctly rounded over long double's whole range (2^-16445 .. 2^16384): CLN has no long
+/// double conversion, and going through double would flush everything outside double's range.
 template <>
 long double round_rational<long double>(const Rational& q) {
-  // No long double conversion in CLN: go through a 64-bit-mantissa long float, whose digits
-  // are exact in long double, then round once more (at most one extra half-ulp of long double).
-  // The value is first scaled by 2^-e into [1/2, 2], so that doubles can carry it whatever its
-  // size (1e400 overflows double but not long double), and scaled back at the end.
-  if (cln::zerop(q)) return 0.0L;
-  const cln::cl_I num = cln::numerator(q), den = cln::denominator(q);
-  const long e = static_cast<long>(cln::integer_length(num)) - static_cast<long>(cln::integer_length(den));
-  const Rational scaled = e >= 0 ? Rational(num) / Rational(cln::ash(den, e)) : Rational(cln::ash(num, -e)) / Rational(den);
-  const cln::cl_F f = cln::cl_float(scaled, cln::float_format(std::numeric_limits<long double>::digits10 + 4));
-  const double hi = cln::double_approx(f);
-  const double lo = cln::double_approx(f - cln::cl_float(hi, f));
-  const long clamped = std::clamp(e, -100000L, 100000L);  // beyond +-16445 the result is inf or 0 anyway
-  return std::ldexp(static_cast<long double>(hi) + static_cast<long double>(lo), static_cast<int>(clamped));
+  return round_by_integers<long double>(q);
 }
 
 template <class F>

@@ -65,8 +65,8 @@ bool certified_bound(const Tracked<F>& x, double tolerance, double& value, doubl
     bound = x.e;  // v is already a double: nothing more to round
   } else {
     // e plus the rounding of v to double, rounded up.
-    const F total = x.e + std::abs(static_cast<F>(value) - x.v);
-    bound = std::nextafter(static_cast<double>(total), HUGE_VAL);
+    // |v - double(v)| is exact in F (at most half an ulp of double, a multiple of v's ulp).
+    bound = round_up_to_double(TrackedTraits<F>::add_up(x.e, std::abs(static_cast<F>(value) - x.v)));
   }
   return bound <= tolerance * std::abs(value) && std::isfinite(bound);
 }
@@ -95,8 +95,8 @@ bool accept(const Tracked<F>& n1, const Tracked<F>& n2, const AdaptiveOptions& o
   if (o.relative_tolerance == 0) {
     if (!rounds_uniquely(n1, r.omega_dot_n1) || !rounds_uniquely(n2, r.omega_dot_n2)) return false;
     // The exact value lies in [v - e, v + e], which rounds entirely to the returned double.
-    r.bound_n1 = std::nextafter(static_cast<double>(n1.e + std::abs(n1.v - static_cast<F>(r.omega_dot_n1))), HUGE_VAL);
-    r.bound_n2 = std::nextafter(static_cast<double>(n2.e + std::abs(n2.v - static_cast<F>(r.omega_dot_n2))), HUGE_VAL);
+    r.bound_n1 = round_up_to_double(TrackedTraits<F>::add_up(n1.e, std::abs(n1.v - static_cast<F>(r.omega_dot_n1))));
+    r.bound_n2 = round_up_to_double(TrackedTraits<F>::add_up(n2.e, std::abs(n2.v - static_cast<F>(r.omega_dot_n2))));
     r.correctly_rounded = true;
     return true;
   }

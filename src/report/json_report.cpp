@@ -26,6 +26,8 @@ json to_json(const ComparisonOutcome& c) {
     if (!c.tolerance_derivation.empty()) j["tolerance_derivation"] = c.tolerance_derivation;
   }
   if (!c.trust_route.empty()) j["trust_route"] = c.trust_route;
+  if (!c.inconclusive_side.empty()) j["inconclusive_side"] = c.inconclusive_side;
+  if (!c.inconclusive_quantity.empty()) j["inconclusive_quantity"] = c.inconclusive_quantity;
   if (!c.reason.empty()) j["reason"] = c.reason;
   return j;
 }

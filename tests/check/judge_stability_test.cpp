@@ -114,5 +114,48 @@ TEST(JudgeStability, WellConditionedDoubleChecksStillHoldWithADerivedTolerance) 
   }
 }
 
+// trust_route names the side and the quantity that made a comparison inconclusive
+// (check/inconclusive_cause.h): D near the dead centre, where no route is better; a quantity of
+// the construction near one of its poles. It used to blame the construction every time.
+std::vector<ComparisonOutcome> inconclusive_comparisons(const char* family, int k) {
+  GroundTruthEngine engine;
+  const ExtremeCase c = find_extreme_family(family)->make(ten_to_minus(k));
+  const PolygonCheck r = check_polygon(engine, dijksman1966::catalogue(), family, c.polygon, c.rates, Arithmetic::Double);
+  std::vector<ComparisonOutcome> out;
+  for (const ClaimOutcome& claim : r.claims)
+    for (const auto* list : {&claim.instances, &claim.terms})
+      for (const ComparisonOutcome& o : *list)
+        if (o.verdict == Verdict::Inconclusive) out.push_back(o);
+  return out;
+}
+
+TEST(TrustRoute, NearTheDeadCentreItNamesDAndSendsNobodyToAnotherFloatingPointRoute) {
+  const auto inconclusive = inconclusive_comparisons("dead_centre", 14);
+  ASSERT_FALSE(inconclusive.empty());
+  for (const ComparisonOutcome& o : inconclusive) {
+    EXPECT_EQ(o.inconclusive_quantity, "D = r_{n-2} x r_{n-1}") << o.label << ": " << o.trust_route;
+    EXPECT_TRUE(o.inconclusive_side == "lhs" || o.inconclusive_side == "rhs" || o.inconclusive_side == "both");
+    EXPECT_EQ(o.trust_route.rfind(o.inconclusive_side + ":", 0), 0U) << o.trust_route;
+    EXPECT_EQ(o.trust_route.find("closed forms"), std::string::npos) << o.trust_route;
+    EXPECT_NE(o.trust_route.find("exact arithmetic"), std::string::npos) << o.trust_route;
+  }
+}
+
+TEST(TrustRoute, NearQAtInfinityItNamesAQuantityOfTheConstruction) {
+  const auto inconclusive = inconclusive_comparisons("q_infinity", 14);
+  ASSERT_FALSE(inconclusive.empty());
+  int construction = 0;
+  for (const ComparisonOutcome& o : inconclusive) {
+    EXPECT_NE(o.inconclusive_quantity, "D = r_{n-2} x r_{n-1}") << o.label;
+    if (o.inconclusive_quantity.find("(construction") != std::string::npos) {
+      ++construction;
+      EXPECT_NE(o.trust_route.find("closed forms and the engine keep full accuracy"), std::string::npos);
+    } else {
+      EXPECT_NE(o.trust_route.find("the claim's own arithmetic"), std::string::npos) << o.trust_route;
+    }
+  }
+  EXPECT_GT(construction, 0);
+}
+
 }  // namespace
 }  // namespace linkproof

@@ -32,9 +32,12 @@ struct ComparisonOutcome {
   /// floating point only: how the tolerance was derived (the two bounds, the conditions of
   /// both sides, u), e.g. "tolerance 3.1e-15 = bound(lhs) 1.2e-15 + bound(rhs) 1.9e-15 + ...".
   std::string tolerance_derivation;
-  /// for `inconclusive` in floating point: what to trust instead (exact arithmetic decides; of
-  /// the two floating-point sides, the better-conditioned one), SPEC A6.
+  /// for `inconclusive` in floating point: which side's bound is the wider ("lhs", "rhs",
+  /// "both"), the quantity whose bound reached its magnitude (check/inconclusive_cause.h, added
+  /// by the claim runner) and what decides instead.
   std::string trust_route;
+  std::string inconclusive_side;      ///< "lhs", "rhs" or "both"; empty unless inconclusive in floating point
+  std::string inconclusive_quantity;  ///< the quantity of trust_route; empty if none reached its magnitude
   std::string undefined_quantity; ///< for `undefined`: which quantity
   std::string reason;             ///< for `undefined`/`inconclusive`/`error`: why
 };

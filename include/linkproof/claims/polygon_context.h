@@ -110,6 +110,19 @@ class PolygonContext {
   const T& omega_dot_in(int j) const { return rates.omega_dot[static_cast<size_t>(j - 1)]; }
   int inputs() const { return n - 3; }
 
+  /// A context on the same polygon, rates and engine with nothing computed yet: evaluating one
+  /// claim on it and then asking what was computed tells which quantities that claim reads
+  /// (check/inconclusive_cause.h names the one that made a comparison inconclusive).
+  PolygonContext fresh() const { return PolygonContext(*engine_, polygon, rates, dead_centre_); }
+  /// What has been computed so far, without computing anything.
+  bool has_truth() const { return truth_.has_value() || velocity_coefficients_.has_value() || coefficients_.has_value(); }
+  bool has_closed_forms() const { return closed_.has_value(); }
+  bool has_four_bar_truth() const {
+    return std::any_of(four_bars_.begin(), four_bars_.end(), [](const auto& f) { return f.has_value(); });
+  }
+  /// The constructions computed so far, by reading.
+  const std::map<int, std::vector<FourBarConstruction<T>>>& computed_constructions() const { return constructions_; }
+
  private:
   /// f() unless at the dead centre, as a Defined (an UndefinedQuantity becomes undefined).
   template <class V, class F>

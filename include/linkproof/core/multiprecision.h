@@ -129,8 +129,16 @@ struct TrackedTraits<MpFloat<Digits>> {
     static const WideBound least = WideBound::from_float_up(cln::least_positive_float(F::format()));
     return least;
   }
-  /// WideBound rounds every operation upward: nothing to add.
-  static WideBound finish(const WideBound& r) { return r; }
+  /// WideBound rounds every operation upward.
+  static WideBound add_up(const WideBound& a, const WideBound& b) { return a + b; }
+  static WideBound mul_up(const WideBound& a, const WideBound& b) { return a * b; }
+  static WideBound div_up(const WideBound& a, const WideBound& b) { return a / b; }
+  /// CLN rounds each operation correctly (to nearest): |x - v| <= u |v| for v = RN(x), plus
+  /// the underflow term (0 while CLN throws on underflow).
+  static WideBound rounding_error(const F& v) { return unit_roundoff() * magnitude(v) + underflow_term(); }
+  /// magnitude(v) is >= |v| (1 + 2^-54) (from_float_up: a 53-bit mantissa moved one ulp up),
+  /// and |x| <= |v| (1 + u) with u <= 2^-128: no extra step is needed.
+  static WideBound quotient_magnitude(const F& v) { return magnitude(v); }
   /// A lower bound on |v| - e. Usually e <= |v|/1024, and L (1 - 2^-9) rounded up is below
   /// |v| - e for L <= |v| (WideBound's rounding adds < 2^-52 relative): no CLN operation.
   /// Otherwise |v| - e in F (e is exact in F, so one correctly rounded subtraction, relative

@@ -1,0 +1,148 @@
+#include "linkproof/check/inconclusive_cause.h"
+
+#include <cln/float.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace linkproof {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Has the bound reached the magnitude (no positive margin |v| - e)?
+template <class F>
+bool reached(const Tracked<F>& x) {
+  using TT = TrackedTraits<F>;
+  return TT::is_unbounded(x.e) || !TT::is_positive(TT::margin(x.v, x.e));
+}
+
+/// Is the bound wider than sqrt(u) |value|, the judge's limit (check/judge.h)? Decided exactly.
+template <class F>
+bool too_wide(const Tracked<F>& x) {
+  using TT = TrackedTraits<F>;
+  if constexpr (std::is_floating_point_v<F>) {
+    return x.e > std::sqrt(TT::unit_roundoff()) * std::abs(x.v);  // sqrt(u) rounded: a policy, not a bound
+  } else {
+    // u = 2^-p with p even: sqrt(u) |v| = |v| 2^-(p/2) exactly.
+    const cln::cl_F limit = cln::scale_float(cln::abs(x.v.value()), -static_cast<long>(F::precision_bits() / 2));
+    return x.e.to_float(F::format()) > limit;
+  }
+}
+
+/// bound / |value| as a double, for display only.
+template <class F>
+double relative_bound(const Tracked<F>& x) {
+  using TT = TrackedTraits<F>;
+  if (TT::is_unbounded(x.e)) return kInf;
+  if constexpr (std::is_floating_point_v<F>) {
+    if (x.e == 0) return 0;
+    return std::isfinite(x.v) && x.v != 0 ? static_cast<double>(x.e / std::abs(x.v)) : kInf;
+  } else {
+    if (x.e.is_zero()) return 0;
+    const WideBound m = WideBound::from_float_down(x.v.value());
+    return m.is_zero() ? kInf : (x.e / m).to_double_up();
+  }
+}
+
+/// The search of the file comment: the first quantity that reached its magnitude, else the
+/// widest one.
+template <class F>
+struct Search {
+  InconclusiveCause cause;
+  bool found = false;
+  void visit(const Tracked<F>& x, const std::string& name, InconclusiveCause::Kind kind) {
+    if (found) return;
+    const double rel = relative_bound(x);
+    if (reached(x) || too_wide(x)) {
+      cause = {kind, name, rel};
+      found = true;
+    } else if (rel > cause.relative_bound) {
+      cause = {InconclusiveCause::Kind::OwnArithmetic, name, rel};
+    }
+  }
+  void visit(const Defined<Tracked<F>>& x, const std::string& name, InconclusiveCause::Kind kind) {
+    if (x.has_value()) visit(x.get(), name, kind);
+  }
+  void visit(const Defined<Vec2<Tracked<F>>>& p, const std::string& name, InconclusiveCause::Kind kind) {
+    if (!p.has_value()) return;
+    visit(p.get().x, name + ".x", kind);
+    visit(p.get().y, name + ".y", kind);
+  }
+};
+
+}  // namespace
+
+std::string InconclusiveCause::describe() const {
+  switch (kind) {
+    case Kind::DeadCentre:
+      return fmt::format(
+          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): near the dead centre every route "
+          "divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, SPEC A6), so no floating-point route is better; exact "
+          "arithmetic (--arith exact) or a longer precision (--arith mp1000) decides",
+          quantity, relative_bound);
+    case Kind::Construction:
+      return fmt::format(
+          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): the construction loses digits near "
+          "its pole (SPEC A6) while the closed forms and the engine keep full accuracy; exact arithmetic "
+          "(--arith exact) decides",
+          quantity, relative_bound);
+    case Kind::OwnArithmetic:
+      break;
+  }
+  return fmt::format(
+      "no quantity the claim reads has an error bound beyond sqrt(u) of its magnitude{}: the digits were lost in the claim's "
+      "own arithmetic (cancellation between its terms); exact arithmetic (--arith exact) or a longer precision decides",
+      quantity.empty() ? std::string() : fmt::format(" (the widest is {}, {:.3g} of it)", quantity, relative_bound));
+}
+
+template <class T>
+InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context) {
+  using F = decltype(T::v);
+  using Kind = InconclusiveCause::Kind;
+  const PolygonContext<T> fresh = context.fresh();
+  try {
+    (void)claim.function<T>()(fresh);
+  } catch (const std::exception&) {
+    // What was computed before the exception is still recorded; that is all we need.
+  }
+  Search<F> s;
+  const int n = fresh.n;
+  const auto& constructions = fresh.computed_constructions();
+  if (fresh.has_truth() || fresh.has_closed_forms() || fresh.has_four_bar_truth() || !constructions.empty())
+    s.visit(cross(fresh.polygon.side(n - 2), fresh.polygon.side(n - 1)), "D = r_{n-2} x r_{n-1}", Kind::DeadCentre);
+  for (const auto& [reading, four_bars] : constructions) {
+    const std::string tag = reading == 0 ? "" : fmt::format(" under reading {}", reading);
+    for (size_t k = 0; k < four_bars.size(); ++k) {
+      const auto& c = four_bars[k];
+      const int j = static_cast<int>(k) + 1;
+      const auto name = [&](const char* q) { return fmt::format("{}_{} of four-bar {} (construction{})", q, j, j, tag); };
+      s.visit(c.q, name("Q"), Kind::Construction);
+      s.visit(c.p_prime, name("P'"), Kind::Construction);
+      s.visit(c.i_out, name("i_{n-1}"), Kind::Construction);
+      s.visit(c.i_cpl, name("i_{n-2}"), Kind::Construction);
+      s.visit(c.cot_beta, name("cot beta"), Kind::Construction);
+      s.visit(c.cot_gamma, name("cot gamma"), Kind::Construction);
+      s.visit(c.lambda, name("lambda"), Kind::Construction);
+      s.visit(c.mu, name("mu"), Kind::Construction);
+    }
+  }
+  return s.cause;
+}
+
+template InconclusiveCause find_inconclusive_cause<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&);
+template InconclusiveCause find_inconclusive_cause<Tracked<long double>>(const Claim&,
+                                                                         const PolygonContext<Tracked<long double>>&);
+template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<30>>>(const Claim&,
+                                                                         const PolygonContext<Tracked<MpFloat<30>>>&);
+template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<50>>>(const Claim&,
+                                                                         const PolygonContext<Tracked<MpFloat<50>>>&);
+template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<100>>>(const Claim&,
+                                                                          const PolygonContext<Tracked<MpFloat<100>>>&);
+template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<1000>>>(const Claim&,
+                                                                           const PolygonContext<Tracked<MpFloat<1000>>>&);
+
+}  // namespace linkproof
