@@ -101,25 +101,45 @@ std::vector<ex> divisors_in(const std::vector<ex>& expressions) {
 
 std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const std::vector<ex>& divisors,
                                              const SideNames& names, const GiNaC::exmap* l_as_j) {
+  // The divisors' numerators, each once.
+  std::vector<ex> rest;
+  for (const ex& d : divisors) {
+    const ex p = GiNaC::expand(GiNaC::numer(GiNaC::normal(d)));
+    if (GiNaC::is_exactly_a<GiNaC::numeric>(p)) continue;
+    if (std::none_of(rest.begin(), rest.end(), [&](const ex& q) { return q.is_equal(p); })) rest.push_back(p);
+  }
+  // Named factors are divided out exactly (cheap); only what is left is factored (factoring the
+  // large numerators of the construction's divisors as a whole is what costs).
   std::vector<ex> factors;
-  for (const ex& d : divisors)
-    for (const ex& f : irreducible_factors(GiNaC::numer(GiNaC::normal(d)))) {
-      bool seen = false;
-      for (const ex& g : factors) seen = seen || same_up_to_constant(f, g);
-      if (!seen) factors.push_back(f);
-    }
-  std::vector<std::string> meanings(factors.size());
-  const auto name_from = [&](const Named& degeneracies) {
+  std::vector<std::string> meanings;
+  const auto strip = [&](const Named& degeneracies) {
     Named named;
     for (const auto& [poly, meaning] : degeneracies)
-      for (const ex& f : irreducible_factors(poly)) named.emplace_back(f, meaning);
-    for (size_t i = 0; i < factors.size(); ++i)
-      for (const auto& [g, m] : named)
-        if (meanings[i].empty() && same_up_to_constant(factors[i], g)) meanings[i] = m;
+      for (const ex& f : irreducible_factors(poly)) named.emplace_back(GiNaC::expand(f), meaning);
+    for (ex& p : rest)
+      for (const auto& [g, m] : named) {
+        ex q;
+        bool used = false;
+        while (!GiNaC::is_exactly_a<GiNaC::numeric>(p) && GiNaC::divide(p, g, q)) {
+          p = q;
+          used = true;
+        }
+        if (used && std::none_of(factors.begin(), factors.end(), [&](const ex& f) { return same_up_to_constant(f, g); })) {
+          factors.push_back(g);
+          meanings.push_back(m);
+        }
+      }
+    rest.erase(std::remove_if(rest.begin(), rest.end(), [](const ex& p) { return GiNaC::is_exactly_a<GiNaC::numeric>(p); }),
+               rest.end());
   };
-  name_from(side_degeneracies(c, names));
-  if (std::any_of(meanings.begin(), meanings.end(), [](const std::string& m) { return m.empty(); }))
-    name_from(construction_degeneracies(c, names));
+  strip(side_degeneracies(c, names));
+  if (!rest.empty()) strip(construction_degeneracies(c, names));
+  for (const ex& p : rest)
+    for (const ex& f : irreducible_factors(p))
+      if (std::none_of(factors.begin(), factors.end(), [&](const ex& g) { return same_up_to_constant(f, g); })) {
+        factors.push_back(f);
+        meanings.emplace_back();
+      }
   std::vector<ExceptionalSet> out;
   std::vector<std::string> kept;
   for (size_t i = 0; i < factors.size(); ++i) {
