@@ -1,6 +1,7 @@
 // linkproof check-data SCENE DATA.csv [--json]
 // Recorded motion against the exact truth at the recorded positions (numerics/data_check.h).
 #include "command.h"
+#include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/motion_data.h"
 #include "linkproof/numerics/data_check.h"

@@ -8,6 +8,8 @@
 
 namespace linkproof::cli {
 
+void add_check_data_command(CLI::App& app, Action& action);  // check_data_command.cpp
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"linkproof: checks published kinematics formulas of planar linkages against the exact truth"};
   app.require_subcommand(1);

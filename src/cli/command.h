@@ -54,6 +54,5 @@ void add_prove_command(CLI::App& app, Action& action);
 void add_check_claim_command(CLI::App& app, Action& action);
 void add_count_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
-void add_check_data_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli

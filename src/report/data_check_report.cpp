@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "linkproof/core/decimal.h"
+
 namespace linkproof {
 
 namespace {

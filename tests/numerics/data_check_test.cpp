@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "linkproof/io/mechanism_scene.h"
+#include "linkproof/core/decimal.h"
 #include "linkproof/io/motion_data.h"
 #include "linkproof/numerics/data_check.h"
 

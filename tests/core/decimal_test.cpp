@@ -1,14 +1,15 @@
-// format_decimal and rational_from_double (core/exact.h).
+// format_decimal and rational_from_double (core/decimal.h).
 #include <gtest/gtest.h>
 
 #include "linkproof/core/exact.h"
+#include "linkproof/core/decimal.h"
 
 namespace linkproof {
 namespace {
 
 Rational q(long p, long d = 1) { return Rational(p) / Rational(d); }
 
-TEST(ExactDecimal, FormatDecimalRoundsToTheRequestedDigits) {
+TEST(Decimal, FormatDecimalRoundsToTheRequestedDigits) {
   EXPECT_EQ(format_decimal(q(1, 3), 5), "0.33333");
   EXPECT_EQ(format_decimal(q(-2, 3), 4), "-0.6667");
   EXPECT_EQ(format_decimal(q(3755, 1331), 10), "2.821187077");
