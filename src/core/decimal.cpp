@@ -7,6 +7,7 @@
 #include <cln/real.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace linkproof {
@@ -40,6 +41,12 @@ std::string format_decimal(const Rational& q, int digits) {
   return (negative ? "-" : "") + out;
 }
 
-Rational rational_from_double(double x) { return cln::rational(cln::cl_DF(x)); }
+Rational rational_from_double(double x) {
+  // CLN's cl_DF has no subnormals (it throws "floating point underflow"): scale a subnormal by
+  // 2^200, exactly, and divide the rational by the same power.
+  if (x != 0 && std::abs(x) < std::numeric_limits<double>::min())
+    return cln::rational(cln::cl_DF(std::ldexp(x, 200))) / cln::expt(Rational(2), 200);
+  return cln::rational(cln::cl_DF(x));
+}
 
 }  // namespace linkproof

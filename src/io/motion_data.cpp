@@ -7,6 +7,7 @@
 #include <cln/integer_io.h>
 #include <cln/rational.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -20,14 +21,13 @@ namespace linkproof {
 
 namespace {
 
-double one_ulp(const Rational& value) {
-  const double d = std::abs(ScalarTraits<double>::from_rational(value));
-  return std::nextafter(d, std::numeric_limits<double>::infinity()) - d;
+double one_ulp(double magnitude) {
+  return std::nextafter(magnitude, std::numeric_limits<double>::infinity()) - magnitude;
 }
 
-double digits_rule(long significant, long last_digit_exponent, const Rational& value) {
+double digits_rule(long significant, long last_digit_exponent, const Rational& value, double scale) {
   double u = 0.5 * std::pow(10.0, static_cast<double>(last_digit_exponent));
-  if (significant >= 16) u = std::max(u, one_ulp(value));
+  if (significant >= 16) u = std::max(u, one_ulp(std::max(std::abs(ScalarTraits<double>::from_rational(value)), scale)));
   return u;
 }
 
@@ -193,6 +193,13 @@ class DataReader {
         default: read_rate(s, col, cells[c], line, c);
       }
     }
+    // Printed doubles among the positions: one ulp at the scale of the row (see the header).
+    double scale = 0;
+    for (size_t j = 0; j < s.x.size(); ++j)
+      scale = std::max({scale, std::abs(ScalarTraits<double>::from_rational(s.x[j].value)),
+                        std::abs(ScalarTraits<double>::from_rational(s.y[j].value))});
+    for (auto* v : {&s.x, &s.y})
+      for (auto& n : *v) n.uncertainty = decimal_uncertainty(n.text, n.value, scale);
     return s;
   }
 
@@ -217,7 +224,7 @@ class DataReader {
 
 }  // namespace
 
-double decimal_uncertainty(std::string_view text, const Rational& value) {
+double decimal_uncertainty(std::string_view text, const Rational& value, double scale) {
   std::string_view t = text;
   if (!t.empty() && (t[0] == '-' || t[0] == '+')) t.remove_prefix(1);
   if (t.find('/') != std::string_view::npos) return 0;
@@ -234,10 +241,10 @@ double decimal_uncertainty(std::string_view text, const Rational& value) {
     if (ch != '.') digits += ch;
   const auto first = digits.find_first_not_of('0');
   const long significant = first == std::string::npos ? 1 : static_cast<long>(digits.size() - first);
-  return digits_rule(significant, exponent - decimals, value);
+  return digits_rule(significant, exponent - decimals, value, scale);
 }
 
-double rational_uncertainty(const Rational& value) {
+double rational_uncertainty(const Rational& value, double scale) {
   const cln::cl_I den = cln::denominator(value);
   if (den == 1) return 0;
   cln::cl_I d = den;
@@ -249,7 +256,7 @@ double rational_uncertainty(const Rational& value) {
   const cln::cl_I scaled = cln::abs(cln::numerator(value * cln::expt(Rational(10), k)));
   std::ostringstream text;
   text << scaled;
-  return digits_rule(static_cast<long>(text.str().size()), -k, value);
+  return digits_rule(static_cast<long>(text.str().size()), -k, value, scale);
 }
 
 MotionData parse_motion_data(const std::string& csv_text, const std::string& source, const MechanismScene& scene) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -43,8 +44,12 @@ double length_change(const Vec2<Rational>& ds, const Vec2<Rational>& dr) {
 void check_closure(const MechanismScene& scene, const MotionSample& s, SampleCheck& out) {
   const Linkage& g = scene.linkage;
   const auto u_sample = [&](int j) { return std::max(s.x[size_t(j)].uncertainty, s.y[size_t(j)].uncertainty); };
+  double scene_scale = 0;
+  for (const auto& jt : g.joints())
+    scene_scale = std::max({scene_scale, std::abs(ScalarTraits<double>::from_rational(jt.at.x)),
+                            std::abs(ScalarTraits<double>::from_rational(jt.at.y))});
   const auto u_scene = [&](int j) {
-    return std::max(rational_uncertainty(g.joint(j).at.x), rational_uncertainty(g.joint(j).at.y));
+    return std::max(rational_uncertainty(g.joint(j).at.x, scene_scale), rational_uncertainty(g.joint(j).at.y, scene_scale));
   };
   const auto at = [&](int j) { return Vec2<Rational>{s.x[size_t(j)].value, s.y[size_t(j)].value}; };
   double worst_ratio = -1;

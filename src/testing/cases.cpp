@@ -136,22 +136,25 @@ MechanismCase make_fourbar(const Point& o2, const Point& a, const Point& b, cons
                   omega, omega_dot);
 }
 
+/// A six-bar from a joint table {name, link, link} over joints A..G in order.
+static MechanismCase six_bar(const std::string& family, std::vector<std::string> links, const int (&pairs)[7][2],
+                      const std::array<Point, 7>& p, const Rational& omega, const Rational& omega_dot) {
+  std::vector<LinkageJoint> joints;
+  for (size_t i = 0; i < 7; ++i)
+    joints.push_back(revolute(std::string(1, static_cast<char>('A' + i)), pairs[i][0], pairs[i][1], p[i]));
+  return assemble(family, std::move(links), 0, std::move(joints), 1, omega, omega_dot);
+}
+
 MechanismCase make_watt_sixbar(const std::array<Point, 7>& p, const Rational& omega, const Rational& omega_dot) {
-  // links: 0 ground, 1 AB, 2 BCD, 3 DE, 4 EF, 5 CFG
-  return assemble("sixbar/watt-i", {"ground", "AB", "BCD", "DE", "EF", "CFG"}, 0,
-                  {revolute("A", 0, 1, p[0]), revolute("B", 1, 2, p[1]), revolute("C", 2, 5, p[2]),
-                   revolute("D", 2, 3, p[3]), revolute("E", 3, 4, p[4]), revolute("F", 4, 5, p[5]),
-                   revolute("G", 0, 5, p[6])},
-                  1, omega, omega_dot);
+  // links: 0 ground, 1 AB, 2 BCD, 3 DE, 4 EF, 5 CFG; joints A..G
+  static const int pairs[7][2] = {{0, 1}, {1, 2}, {2, 5}, {2, 3}, {3, 4}, {4, 5}, {0, 5}};
+  return six_bar("sixbar/watt-i", {"ground", "AB", "BCD", "DE", "EF", "CFG"}, pairs, p, omega, omega_dot);
 }
 
 MechanismCase make_stephenson_sixbar(const std::array<Point, 7>& p, const Rational& omega, const Rational& omega_dot) {
-  // links: 0 ground, 1 AB, 2 BCE, 3 CD, 4 EF, 5 FG
-  return assemble("sixbar/stephenson-iii", {"ground", "AB", "BCE", "CD", "EF", "FG"}, 0,
-                  {revolute("A", 0, 1, p[0]), revolute("B", 1, 2, p[1]), revolute("C", 2, 3, p[2]),
-                   revolute("D", 3, 0, p[3]), revolute("E", 2, 4, p[4]), revolute("F", 4, 5, p[5]),
-                   revolute("G", 5, 0, p[6])},
-                  1, omega, omega_dot);
+  // links: 0 ground, 1 AB, 2 BCE, 3 CD, 4 EF, 5 FG; joints A..G
+  static const int pairs[7][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {2, 4}, {4, 5}, {5, 0}};
+  return six_bar("sixbar/stephenson-iii", {"ground", "AB", "BCE", "CD", "EF", "FG"}, pairs, p, omega, omega_dot);
 }
 
 MechanismCase make_fig5_eightbar(const std::array<Point, 10>& p, const Rational& omega, const Rational& omega_dot) {

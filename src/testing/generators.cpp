@@ -34,12 +34,12 @@ Bias resolve(Bias b) {
 /// The bias exponent k in [2, kmax] (shrinks toward 2) and the family suffix.
 int draw_exponent(int kmax) { return *rc::gen::inRange(2, kmax + 1); }
 
-/// A point p moved so that it lies ~eps from the line through `from` in direction v, at
-/// s = num/den along it.
+/// A point ~eps off the line through `from` in direction v, at s v with s in {1/2, 2, 1/3, 3,
+/// 2/3, 3/2} (never 1: the point would sit next to from + v, a short side at a right angle).
 Point near_line(const Point& from, const Point& v, const Rational& eps) {
-  const int num = *rc::gen::inRange(1, 4);
-  const int den = *rc::gen::inRange(1, 4);
-  return from + (Rational(num) / Rational(den)) * v + eps * jturn(v);
+  static const int s[6][2] = {{1, 2}, {2, 1}, {1, 3}, {3, 1}, {2, 3}, {3, 2}};
+  const auto& f = s[*rc::gen::inRange(0, 6)];
+  return from + (Rational(f[0]) / Rational(f[1])) * v + eps * jturn(v);
 }
 
 /// `moved` scaled about `fixed` by 10^(+-k): one link much shorter or longer than the rest.
@@ -269,7 +269,17 @@ rc::Gen<MechanismCase> gen_mechanism(MechanismOptions o) {
   });
 }
 
-void classify_case(const MechanismCase& c) { RC_CLASSIFY(true, c.family); }
-void classify_case(const PolygonCase& c) { RC_CLASSIFY(true, c.family); }
+/// The family label without the bias exponent ("near-dead-centre-1e-7" -> "near-dead-centre"),
+/// so that coverage counts cases per family and bias.
+std::string coverage_label(std::string family) {
+  for (auto p = family.find("-1e"); p != std::string::npos; p = family.find("-1e")) {
+    auto end = family.find('/', p);
+    family.erase(p, end == std::string::npos ? std::string::npos : end - p);
+  }
+  return family;
+}
+
+void classify_case(const MechanismCase& c) { RC_CLASSIFY(true, coverage_label(c.family)); }
+void classify_case(const PolygonCase& c) { RC_CLASSIFY(true, coverage_label(c.family)); }
 
 }  // namespace linkproof::testing

@@ -42,6 +42,8 @@ TEST(MotionData, DigitsGiveTheUncertaintyOfEachNumber) {
   EXPECT_DOUBLE_EQ(decimal_uncertainty("1.5e-3", parse_rational("1.5e-3")), 5e-5);
   // 17 significant digits: a printed double, one ulp of it (2^-51 at 2.72).
   EXPECT_DOUBLE_EQ(decimal_uncertainty("-2.7200000000000002", parse_rational("-2.7200000000000002")), std::ldexp(1.0, -51));
+  // ... or one ulp of the row's scale when that is larger (2^-47 at 60).
+  EXPECT_DOUBLE_EQ(decimal_uncertainty("-2.7200000000000002", parse_rational("-2.7200000000000002"), 60), std::ldexp(1.0, -47));
   EXPECT_EQ(rational_uncertainty(Rational(12)), 0);
   EXPECT_EQ(rational_uncertainty(Rational(1) / 3), 0);
   EXPECT_DOUBLE_EQ(rational_uncertainty(parse_rational("117.349")), 0.0005);

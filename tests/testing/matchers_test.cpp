@@ -17,8 +17,6 @@ MechanismCase seed001_fourbar() {
   return make_fourbar(pt(0, 0), pt(3, 4), pt(11, 10), pt(11, 0), 2, 5);
 }
 
-std::vector<double> truth_as_doubles(const MechanismCase& c) { return compute_truth(c.scene).alpha_doubles(); }
-
 TEST(TestingMatchers, AngularAccelerationsMatchAcceptsTheTruthOfSpecB) {
   const MechanismCase c = seed001_fourbar();
   const MechanismTruth t = compute_truth(c.scene);
@@ -56,13 +54,15 @@ TEST(TestingMatchers, ClaimHoldsOnTheSpecPentagonAndExplainsAnErratum) {
   EXPECT_THAT(polygon_mechanism(p), ClaimHolds("mechanism.routes_agree"));
 }
 
-RC_GTEST_PROP(TestingMatchers, Eq22HoldsOnEveryGeneratedPolygon, ()) {
+RC_GTEST_PROP(TestingMatchers, Eq22HoldsOnEveryGeneratedPolygonWhereItsConstructionExists, ()) {
   PolygonOptions o;
   o.n_max = 6;
   const PolygonCase c = *gen_polygon(o);
   classify_case(c);
   const ClaimResult r = check_claim("dijksman1966.eq22", c);
-  RC_ASSERT(r.holds);
+  // Undefined where the construction is (Q_j or P'_j at infinity, SPEC A6); never fails.
+  RC_CLASSIFY(!r.holds, "construction undefined");
+  RC_ASSERT(r.holds || r.verdict == "undefined");
 }
 
 /// A planted bug: the truth, but the rocker's (last link's) alpha with the wrong sign; wrong

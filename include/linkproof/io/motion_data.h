@@ -16,8 +16,10 @@
 // Numbers: integers, decimals ("-2.7200000000000002", "1.5e-3") and fractions ("7/3"), exact.
 // Uncertainty from the digits (decimal_uncertainty): an integer or a fraction is exact; a
 // decimal whose last digit is at 10^m is uncertain by 10^m / 2; a decimal with 16 or more
-// significant digits is a printed binary64 (round-trip form), uncertain by one ulp of its
-// double (at best the correctly rounded result, printed within half an ulp), if that is larger.
+// significant digits is a printed binary64 (round-trip form) computed at the scale of the
+// mechanism, uncertain by one ulp of that scale (the largest |coordinate| of the row) if that is
+// larger: positions computed in double as sums of vectors of that size carry errors of that
+// order, whatever the size of the coordinate itself.
 //
 // Errors: InputError(file, "line L, column C (`name`)", problem) naming the CSV row (1-based
 // line in the file) and column; unknown, duplicate or missing columns name the header column.
@@ -54,12 +56,13 @@ struct MotionData {
   std::vector<MotionSample> samples;
 };
 
-/// The uncertainty implied by a number's text (see above); `value` is its exact value.
-double decimal_uncertainty(std::string_view text, const Rational& value);
+/// The uncertainty implied by a number's text (see above); `value` is its exact value, `scale`
+/// the magnitude whose ulp bounds a printed double's error (default: |value| itself).
+double decimal_uncertainty(std::string_view text, const Rational& value, double scale = 0);
 /// The same rule for an exact rational from a scene file (its shortest decimal form): integers
 /// and non-terminating fractions are exact; a terminating decimal with k decimals is uncertain by
-/// 10^-k / 2, or one ulp when it has 16 or more significant digits.
-double rational_uncertainty(const Rational& value);
+/// 10^-k / 2, or one ulp of max(|value|, scale) when it has 16 or more significant digits.
+double rational_uncertainty(const Rational& value, double scale = 0);
 
 MotionData parse_motion_data(const std::string& csv_text, const std::string& source, const MechanismScene& scene);
 MotionData load_motion_data(const std::string& path, const MechanismScene& scene);

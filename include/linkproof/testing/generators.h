@@ -29,7 +29,8 @@
 //   Any             one of the above, or none
 // Biases that do not apply to a family (QFar, BetaSmall on mechanisms) give ordinary cases.
 //
-// Coverage: classify_case(c) calls RC_CLASSIFY with the case's family label (testing/cases.h).
+// Coverage: classify_case(c) calls RC_CLASSIFY with the case's family label (testing/cases.h)
+// without the bias exponent.
 #pragma once
 
 #include <rapidcheck.h>
@@ -79,7 +80,9 @@ rc::Gen<MechanismCase> gen_slider_mechanism(Bias bias = Bias::None, int coordina
 /// Any of the families of `options`, shrinking toward the first.
 rc::Gen<MechanismCase> gen_mechanism(MechanismOptions options = {});
 
-/// RC_CLASSIFY by family (call inside a property).
+/// The RC_CLASSIFY label of a family: without the bias exponent ("fourbar/crank-rocker/near-toggle").
+std::string coverage_label(std::string family);
+/// RC_CLASSIFY by family and bias (call inside a property).
 void classify_case(const MechanismCase& c);
 void classify_case(const PolygonCase& c);
 
