@@ -13,12 +13,18 @@ namespace linkproof::testing {
 
 namespace {
 
+/// Exact: from the exact joint differences. Tracked<double>: from every joint rounded to double
+/// (with that rounding in its radius), as a double library receives them: so the bound also
+/// covers the cancellation in differences of nearby joints (A - O2 of a tiny crank).
 template <class T>
 MechanismSolution<T> solve_vector_route(const MechanismScene& s) {
   const Linkage& g = s.linkage;
+  std::vector<Vec2<T>> at;
+  for (const auto& j : g.joints()) at.push_back(vec_from_rational<T>(j.at));
+  const std::vector<Vec2<T>>* positions = ScalarTraits<T>::is_exact ? nullptr : &at;
   return solve_mechanism<T>(
-      g, s.inputs, rigid_body_constraint_matrix<T>(g),
-      [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd); }, s.source);
+      g, s.inputs, rigid_body_constraint_matrix<T>(g, positions),
+      [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, positions); }, s.source);
 }
 
 BoundedDouble bounded(const Tracked<double>& x) {

@@ -2,9 +2,10 @@
 // angular velocity omega and angular acceleration alpha (= omega-dot), relative to the ground,
 //   exact    CLN rationals, from the rigid-body vector route (mechanism/mechanism_vector_route.h)
 //            solved exactly; the same numbers `linkproof check` prints for the scene;
-//   double   the same solve in Tracked<double> (core/tracked.h): a double midpoint and a radius
-//            that bounds its distance from the exact value rigorously (running error analysis of
-//            every rounding, including the conversion of the rational joints and rates).
+//   double   the same solve in Tracked<double> (core/tracked.h) from every joint position and
+//            rate rounded to double (as a double library receives them): a double midpoint and a
+//            radius that bounds its distance from the exact value rigorously (running error
+//            analysis of every rounding, the rounding of the inputs included).
 // The double pair is what a double-precision library can be expected to reach: a user's value
 // within `bound` of `value` is as good as double arithmetic on this route gets.
 //
