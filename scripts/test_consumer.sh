@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Tests the installed package: installs an already-built linkproof build tree into a temporary
 # prefix, then configures, builds and runs the consumer project tests/consumer against it with
-# find_package(linkproof). The build tree is only read; everything else lives in temporary
+# find_package(linkproof); then, when linkproof::testing was installed, the oracle consumer
+# tests/oracle_consumer (property tests with linkproof's generators and matchers): its correct
+# properties must pass, its planted bug must be caught with a small shrunk scene, and the
+# installed `linkproof check` must read that scene. The build tree is only read; everything else lives in temporary
 # directories that are removed on exit.
 #   scripts/test_consumer.sh [BUILD_DIR]     (default: build; relative to the current directory)
 set -euo pipefail
@@ -17,7 +20,8 @@ repo_root="$(pwd)"
 
 prefix="$(mktemp -d "${TMPDIR:-/tmp}/linkproof-prefix.XXXXXX")"
 consumer_build="$(mktemp -d "${TMPDIR:-/tmp}/linkproof-consumer.XXXXXX")"
-cleanup() { rm -rf -- "$prefix" "$consumer_build"; }
+oracle_build="$(mktemp -d "${TMPDIR:-/tmp}/linkproof-oracle.XXXXXX")"
+cleanup() { rm -rf -- "$prefix" "$consumer_build" "$oracle_build"; }
 trap cleanup EXIT
 
 # Build the consumer with the compiler and build type of the installed tree.
@@ -54,4 +58,34 @@ echo "==> test_consumer: $consumer_build/linkproof_consumer"
 rc=0
 "$consumer_build/linkproof_consumer" || rc=$?
 echo "==> test_consumer: consumer exited with ${rc}"
-exit "${rc}"
+[[ "$rc" -eq 0 ]] || exit "$rc"
+
+if [[ ! -f "$prefix/lib/cmake/linkproof/linkproofTestingTargets.cmake" ]]; then
+  echo "==> test_consumer: linkproof::testing not installed (no RapidCheck/GTest at build time): oracle consumer skipped"
+  exit 0
+fi
+echo "==> test_consumer: oracle consumer (tests/oracle_consumer) against linkproof::testing"
+cmake -S "$repo_root/tests/oracle_consumer" -B "$oracle_build" \
+  -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON "${cmake_args[@]}"
+cmake --build "$oracle_build" -j"$(nproc)"
+export RC_PARAMS="${RC_PARAMS:-seed=20261121 max_success=100}"
+echo "==> test_consumer: RC_PARAMS=$RC_PARAMS"
+"$oracle_build/oracle_consumer" --gtest_filter='-*PlantedBug*'
+log="$oracle_build/planted_bug.log"
+rc=0
+"$oracle_build/oracle_consumer" --gtest_filter='*PlantedBug*' >"$log" 2>&1 || rc=$?
+cat "$log"
+if [[ "$rc" -eq 0 ]]; then
+  echo "test_consumer: ERROR: the planted bug was not caught" >&2
+  exit 1
+fi
+scene="$oracle_build/shrunk_scene.yaml"
+sed -n '/^--- scene ---$/,/^--- end scene ---$/p' "$log" | sed '1d;$d' >"$scene"
+if [[ ! -s "$scene" ]]; then
+  echo "test_consumer: ERROR: the failure printed no scene" >&2
+  exit 1
+fi
+echo "==> test_consumer: the shrunk scene, read by the installed linkproof check:"
+"$prefix/bin/linkproof" check "$scene"
+echo "==> test_consumer: planted bug caught and shrunk; oracle consumer OK"
+exit 0

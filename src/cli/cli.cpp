@@ -11,6 +11,8 @@
 
 namespace linkproof::cli {
 
+void add_check_data_command(CLI::App& app, Action& action);  // check_data_command.cpp
+
 namespace {
 
 // "check, sweep, ..." for messages.
@@ -48,6 +50,7 @@ std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out
   add_bench_command(app, action);
   add_curvature_command(app, action);
   add_merge_command(app, action);
+  add_check_data_command(app, action);
 
   if (!args.empty() && !args.front().empty() && args.front().front() != '-' &&
       app.get_subcommands([&](CLI::App* sub) { return sub->check_name(args.front()); }).empty())

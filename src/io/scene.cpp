@@ -188,14 +188,6 @@ class SceneReader {
 };
 
 // Integers plain; fractions double-quoted so that no YAML reader takes "3/2" for anything else.
-void emit_number(YAML::Emitter& out, const Rational& q) {
-  const std::string text = format_rational(q);
-  if (text.find('/') == std::string::npos)
-    out << text;
-  else
-    out << YAML::DoubleQuoted << text;
-}
-
 void emit_list(YAML::Emitter& out, const std::vector<Rational>& values) {
   out << YAML::Flow << YAML::BeginSeq;
   for (const auto& v : values) emit_number(out, v);

@@ -232,4 +232,12 @@ std::string read_scene_file(const std::string& path) {
   return text;
 }
 
+void emit_number(YAML::Emitter& out, const Rational& q) {
+  const std::string text = format_rational(q);
+  if (text.find('/') == std::string::npos)
+    out << text;
+  else
+    out << YAML::DoubleQuoted << text;
+}
+
 }  // namespace linkproof::yaml_io

@@ -37,6 +37,9 @@ Rational read_exact_number(const YAML::Node& node, const std::string& source, co
 YAML::Node parse_single_document(const std::string& text, const std::string& source,
                                  const std::string& empty_problem);
 
+/// Writes q exactly: integers plain, fractions as a double-quoted "p/q" (read back exactly).
+void emit_number(YAML::Emitter& out, const Rational& q);
+
 /// The contents of the file at `path`, or InputError(path, "", "cannot read file: ...").
 std::string read_scene_file(const std::string& path);
 

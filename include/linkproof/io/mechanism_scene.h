@@ -50,6 +50,13 @@ bool is_mechanism_scene_text(const std::string& yaml_text);
 MechanismScene load_mechanism_scene(const std::string& path);
 MechanismScene parse_mechanism_scene(const std::string& yaml_text, const std::string& source);
 
+/// Writes the scene in the schema above (without `description`; `links` listed in link order,
+/// every number exact: integers plain, fractions "p/q"), so that
+/// parse_mechanism_scene(mechanism_scene_to_yaml(s), s.source) describes the same mechanism:
+/// the same links, joints, inputs, points, dimensions, tolerance and catalogues. Used to print a
+/// generated or failing case as a file `linkproof check` reads (linkproof/testing.h).
+std::string mechanism_scene_to_yaml(const MechanismScene& scene);
+
 /// The scene read from `path` as text (InputError if unreadable); used to choose the reader.
 std::string read_scene_text(const std::string& path);
 

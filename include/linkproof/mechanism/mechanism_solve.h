@@ -34,10 +34,18 @@ struct MechanismSolution {
   std::vector<T> qdot, qddot;
 };
 
-/// The input rows: one unit row per input, in the unknown's column.
+/// An input's rate and its derivative already in T (e.g. with the uncertainty of recorded data).
+template <class T>
+struct InputValue {
+  T rate, rate_dot;
+};
+
+/// The input rows: one unit row per input, in the unknown's column; the right-hand sides are the
+/// inputs' rates, or `values[k]` when given.
 template <class T>
 void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inputs, DenseMatrix<T>& A,
-                       std::vector<T>& b, bool second_order, const std::string& source) {
+                       std::vector<T>& b, bool second_order, const std::string& source,
+                       const std::vector<InputValue<T>>* values = nullptr) {
   for (size_t k = 0; k < inputs.size(); ++k) {
     const MechanismInput& in = inputs[k];
     const int col = in.kind == MechanismInput::Kind::Link ? g.unknown_of_link(in.index) : g.unknown_of_joint(in.index);
@@ -48,16 +56,19 @@ void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inpu
     std::vector<T> row(static_cast<size_t>(g.unknown_count()), from_int<T>(0));
     row[static_cast<size_t>(col)] = from_int<T>(1);
     A.push_back(std::move(row));
-    b.push_back(from_rational<T>(second_order ? in.rate_dot : in.rate));
+    if (values)
+      b.push_back(second_order ? (*values)[k].rate_dot : (*values)[k].rate);
+    else
+      b.push_back(from_rational<T>(second_order ? in.rate_dot : in.rate));
   }
 }
 
 /// Solves velocity then acceleration. `A` is the constraint matrix; `acceleration_rhs(qdot)`
-/// returns h(q-dot) (constraint_count entries).
+/// returns h(q-dot) (constraint_count entries). `values`: the inputs' rates in T (optional).
 template <class T, class AccelerationRhs>
 MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<MechanismInput>& inputs,
                                      const DenseMatrix<T>& A, AccelerationRhs acceleration_rhs,
-                                     const std::string& source) {
+                                     const std::string& source, const std::vector<InputValue<T>>* values = nullptr) {
   const size_t N = static_cast<size_t>(g.unknown_count());
   MechanismSolution<T> s;
   s.rank = solve_linear_system<T>(A, std::vector<T>(A.size(), from_int<T>(0))).rank;
@@ -73,7 +84,7 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
                                  s.mobility, s.rank, N, g.grubler_mobility(), s.mobility, inputs.size()));
   DenseMatrix<T> Av = A;
   std::vector<T> bv(A.size(), from_int<T>(0));
-  append_input_rows(g, inputs, Av, bv, false, source);
+  append_input_rows(g, inputs, Av, bv, false, source, values);
   const LinearSolution<T> vel = solve_linear_system<T>(Av, bv);
   if (vel.rank < static_cast<int>(N))
     throw InputError(source, "mechanism.inputs",
@@ -85,7 +96,7 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
   DenseMatrix<T> Aa = A;
   std::vector<T> ba = acceleration_rhs(s.qdot);
   LINKPROOF_ASSERT(ba.size() == A.size(), "acceleration right-hand side has the wrong size");
-  append_input_rows(g, inputs, Aa, ba, true, source);
+  append_input_rows(g, inputs, Aa, ba, true, source, values);
   const LinearSolution<T> acc = solve_linear_system<T>(Aa, ba);
   if (!acc.consistent || acc.x.size() != N)
     throw InputError(source, "mechanism.inputs", "the acceleration inputs contradict the constraints");

@@ -11,6 +11,9 @@
 //             + sum (+-) (sigma-ddot u + 2 omega_guide sigma-dot J u) = 0   (Coriolis, SPEC C)
 // and per prismatic pair omega_slider - omega_guide = 0 (and its derivative).
 // No angles appear: with rational joints and rates every entry is rational.
+// Both builders take the joint positions from the linkage (exact, converted to T), or from
+// `at` when given (one per joint, already in T: e.g. Tracked values whose radius is the
+// uncertainty of recorded positions, cli check-data).
 #pragma once
 
 #include <vector>
@@ -21,8 +24,15 @@
 namespace linkproof {
 
 /// The constraint matrix A (Linkage::constraint_count() x unknown_count()).
+/// The loop vector from joint `from` to joint `to`, exact or from `at` (see above).
 template <class T>
-DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g) {
+Vec2<T> joint_difference(const Linkage& g, int from, int to, const std::vector<Vec2<T>>* at) {
+  if (at) return (*at)[static_cast<size_t>(to)] - (*at)[static_cast<size_t>(from)];
+  return vec_from_rational<T>(g.joint(to).at - g.joint(from).at);
+}
+
+template <class T>
+DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const std::vector<Vec2<T>>* at = nullptr) {
   const size_t N = static_cast<size_t>(g.unknown_count());
   DenseMatrix<T> A;
   for (const LinkageLoop& loop : g.loops()) {
@@ -31,7 +41,7 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g) {
     for (size_t i = 0; i < k; ++i) {
       const JointCrossing& c = loop.crossings[i];
       const JointCrossing& next = loop.crossings[(i + 1) % k];
-      const Vec2<T> r = vec_from_rational<T>(g.joint(next.joint).at - g.joint(c.joint).at);
+      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, at);
       if (const int col = g.unknown_of_link(c.to); col >= 0) {
         rx[static_cast<size_t>(col)] = rx[static_cast<size_t>(col)] - r.y;  // J r = (-r_y, r_x)
         ry[static_cast<size_t>(col)] = ry[static_cast<size_t>(col)] + r.x;
@@ -60,7 +70,8 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g) {
 /// sigma-ddot, moved to the right). `coriolis = false` drops the Coriolis terms: a deliberately
 /// wrong variant, for the claim that they are needed (SPEC C).
 template <class T>
-std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot, bool coriolis = true) {
+std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot, bool coriolis = true,
+                                          const std::vector<Vec2<T>>* at = nullptr) {
   const auto omega = [&](int link) {
     const int c = g.unknown_of_link(link);
     return c < 0 ? from_int<T>(0) : qdot[static_cast<size_t>(c)];
@@ -72,7 +83,7 @@ std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T
     for (size_t i = 0; i < k; ++i) {
       const JointCrossing& c = loop.crossings[i];
       const JointCrossing& next = loop.crossings[(i + 1) % k];
-      const Vec2<T> r = vec_from_rational<T>(g.joint(next.joint).at - g.joint(c.joint).at);
+      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, at);
       const T w = omega(c.to);
       acc = acc + (w * w) * r;
       if (const int s = g.sliding_sign(c); s != 0 && coriolis) {
