@@ -21,6 +21,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   add_check_claim_command(app, action);
   add_count_command(app, action);
   add_bench_command(app, action);
+  add_report_command(app, action);
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
   try {

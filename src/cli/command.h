@@ -54,5 +54,6 @@ void add_prove_command(CLI::App& app, Action& action);
 void add_check_claim_command(CLI::App& app, Action& action);
 void add_count_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
+void add_report_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli
