@@ -41,14 +41,15 @@ Rational half_unit(int decimals) {
   return u;
 }
 
-MechanismClaim step_claim(const PrintedStep& s, Expectation expected, std::string note, std::string id_suffix = "") {
+MechanismClaim step_claim(const PrintedStep& s, Expectation expected, std::string note, std::string id_suffix = "",
+                          const char* what = "printed") {
   const Rational printed = q(s.printed);
   const int d = printed_decimals(s.printed);
   const Rational tol = half_unit(d);
   ClaimInfo info{std::string(s.id) + id_suffix, std::string(kSource) + ", eq. " + s.equation,
-                 fmt::format("{} {} = {} (printed; consistent iff |computed - printed| <= {} = half a unit of the "
+                 fmt::format("{} {} = {} ({}; consistent iff |computed - printed| <= {} = half a unit of the "
                              "last printed digit)",
-                             s.equation, s.formula, s.printed, format_rational(tol)),
+                             s.equation, s.formula, s.printed, what, format_rational(tol)),
                  expected, std::move(note), 4, 0};
   const Rational computed = s.computed;
   const std::string label =
@@ -87,7 +88,7 @@ std::vector<MechanismClaim> koshel_printed_chain() {
   for (const auto& s : steps) {
     if (std::string(s.id) == "koshel.eq7") {
       // The corrected step (the exact 53.125 printed to one decimal) and the printed one.
-      claims.push_back(step_claim(s, Expectation::Holds, ""));
+      claims.push_back(step_claim(s, Expectation::Holds, "", "", "corrected: the exact 53.125 to the printed precision"));
       PrintedStep as_printed = s;
       as_printed.printed = "52.9";
       claims.push_back(step_claim(as_printed, Expectation::Fails,
