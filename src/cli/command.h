@@ -9,11 +9,13 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
 
 #include "linkproof/check/arithmetic.h"
+#include "linkproof/io/claim_file.h"
 
 namespace linkproof::cli {
 
@@ -47,6 +49,13 @@ Arithmetic arithmetic_or_throw(const std::string& s);
 
 /// "N" or "A..B" with lo <= A <= B <= hi, or an InputError naming `option`.
 std::pair<int, int> parse_n_range(const std::string& s, const std::string& option, int lo, int hi);
+
+/// The claims of `file` named by `ids` (the full id or its last part, e.g. "eq22"), in that
+/// order; every claim when `ids` is empty. InputError naming --claim for an unknown id.
+std::vector<const DataClaim*> choose_claims(const ClaimFile& file, const std::vector<std::string>& ids);
+
+/// --n within 4..kMaxClaimSides and --ladder-seconds within 0..3600, or an InputError naming it.
+void check_prove_limits(const std::optional<int>& n, double ladder_seconds);
 
 void add_check_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);

@@ -5,23 +5,11 @@
 #include <sstream>
 
 #include "linkproof/report/render.h"
+#include "svg_plot.h"
 
 namespace linkproof::report {
 
-std::string html_escape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string html_escape(const std::string& s) { return svg_escape(s); }
 
 namespace {
 

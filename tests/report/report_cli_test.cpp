@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "support/cli_run.h"
+#include "support/temp_dir.h"
 
 namespace linkproof {
 namespace {
@@ -14,23 +15,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::CliRun;
 using test::run_cli;
+using test::slurp;
+using test::TempDir;
 
 std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("linkproof_report_" + name)) {
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // The positions of the sections (by id) in the HTML, which must be increasing.
 void expect_sections_in_order(const std::string& html, const std::vector<std::string>& ids) {
@@ -123,7 +111,7 @@ TEST(ReportCli, Seed003MechanismReportIsWritten) {
 TEST(ReportCli, ClaimFileReportProvesAndShowsCounterexampleOfAnErratum) {
   TempDir dir("claims");
   const CliRun r = run_cli({"report", source("verify/claims/dijksman1966.yaml"), "--claim", "eq5", "--claim",
-                            "eq4.printed", "--format", "html", "--out", dir.path.string()});
+                            "eq4.printed", "--ladder-seconds", "0", "--format", "html", "--out", dir.path.string()});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string html = slurp(dir.path / "dijksman1966.html");
   expect_sections_in_order(html, {"summary", "proof", "counterexamples", "reproduce"});

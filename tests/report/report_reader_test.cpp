@@ -1,6 +1,7 @@
 // Reports as a reader sees them: the HTML rendered by headless Chromium (the DOM after KaTeX
 // ran, and a screenshot that is not blank), the LaTeX compiled by pdflatex. Each test skips only
 // when its tool is not installed (scripts/install_deps.sh installs both, so CI runs them).
+// Named ...Slow (label slow): a headless browser start costs seconds of wall time.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,12 +12,15 @@
 #include <sstream>
 
 #include "support/cli_run.h"
+#include "support/temp_dir.h"
 
 namespace linkproof {
 namespace {
 
 namespace fs = std::filesystem;
 using test::run_cli;
+using test::slurp;
+using test::TempDir;
 
 std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
@@ -39,22 +43,6 @@ std::string capture(const std::string& command, int& status) {
   return out;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("linkproof_reader_" + name)) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
-
 // Headless Chromium as root needs --no-sandbox; no network is used (the page is self-contained).
 std::string chromium(const std::string& args) {
   return "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run "
@@ -67,7 +55,7 @@ size_t count(const std::string& s, const std::string& what) {
   return n;
 }
 
-TEST(ReportReader, HtmlReportRendersInChromiumWithMathAndFigures) {
+TEST(ReportReader, HtmlReportRendersInChromiumWithMathAndFiguresSlow) {
   if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
   TempDir dir("html");
   ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
@@ -90,7 +78,7 @@ TEST(ReportReader, HtmlReportRendersInChromiumWithMathAndFigures) {
   EXPECT_NE(dom.find("<svg"), std::string::npos);
 }
 
-TEST(ReportReader, HtmlReportScreenshotIsNotBlank) {
+TEST(ReportReader, HtmlReportScreenshotIsNotBlankSlow) {
   if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
   TempDir dir("shot");
   ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
@@ -108,7 +96,7 @@ TEST(ReportReader, HtmlReportScreenshotIsNotBlank) {
   EXPECT_GT(report, 10 * blank) << "report " << report << " bytes, blank page " << blank << " bytes";
 }
 
-TEST(ReportReader, LatexReportsCompileWithPdflatex) {
+TEST(ReportReader, LatexReportsCompileWithPdflatexSlow) {
   if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed (scripts/install_deps.sh installs it)";
   TempDir dir("tex");
   ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--format", "tex", "--out", dir.path.string()}).code, 0);
