@@ -10,6 +10,9 @@ PACKAGES=(
   libginac-dev libcln-dev libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev librapidcheck-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
+  # `linkproof report`: KaTeX inlined into HTML reports; the tests render them in headless
+  # Chromium and compile the LaTeX with pdflatex (texlive-latex-base alone suffices).
+  libjs-katex chromium texlive-latex-base
 )
 
 echo "==> install_deps: checking ${#PACKAGES[@]} Debian packages with dpkg-query"

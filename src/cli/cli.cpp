@@ -51,6 +51,7 @@ std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out
   add_curvature_command(app, action);
   add_merge_command(app, action);
   add_check_data_command(app, action);
+  add_report_command(app, action);
 
   if (!args.empty() && !args.front().empty() && args.front().front() != '-' &&
       app.get_subcommands([&](CLI::App* sub) { return sub->check_name(args.front()); }).empty())

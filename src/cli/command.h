@@ -9,12 +9,14 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
 
 #include "linkproof/check/arithmetic.h"
 #include "linkproof/report/json_report.h"
+#include "linkproof/io/claim_file.h"
 
 namespace linkproof::cli {
 
@@ -56,6 +58,12 @@ CLI::Validator seed_validator();
 CLI::Validator seconds_validator();
 /// CLI11 check for an integer option from lo to hi.
 CLI::Validator int_range_validator(int lo, int hi);
+/// The claims of `file` named by `ids` (the full id or its last part, e.g. "eq22"), in that
+/// order; every claim when `ids` is empty. InputError naming --claim for an unknown id.
+std::vector<const DataClaim*> choose_claims(const ClaimFile& file, const std::vector<std::string>& ids);
+
+/// --n within 4..kMaxClaimSides and --ladder-seconds within 0..3600, or an InputError naming it.
+void check_prove_limits(const std::optional<int>& n, double ladder_seconds);
 
 void add_check_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
@@ -65,5 +73,6 @@ void add_count_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_curvature_command(CLI::App& app, Action& action);
 void add_merge_command(CLI::App& app, Action& action);
+void add_report_command(CLI::App& app, Action& action);
 
 }  // namespace linkproof::cli

@@ -21,20 +21,8 @@ struct ProveArgs {
 
 int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
   const ClaimFile file = a.file.empty() ? dijksman1966::claim_file() : load_claim_file(a.file);
-  if (a.n && (*a.n < 4 || *a.n > kMaxClaimSides))
-    throw InputError("<command line>", "--n", "must be between 4 and " + std::to_string(kMaxClaimSides));
-  if (a.ladder_seconds < 0 || a.ladder_seconds > 3600)
-    throw InputError("<command line>", "--ladder-seconds", "must be between 0 and 3600");
-  std::vector<const DataClaim*> chosen;
-  for (const auto& id : a.claims) {
-    const DataClaim* found = nullptr;
-    for (const auto& c : file.claims)
-      if (c.info.id == id || c.info.id == "dijksman1966." + id) found = &c;
-    if (!found) throw InputError("<command line>", "--claim", "no claim '" + id + "' in " + file.source);
-    chosen.push_back(found);
-  }
-  if (chosen.empty())
-    for (const auto& c : file.claims) chosen.push_back(&c);
+  check_prove_limits(a.n, a.ladder_seconds);
+  const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   ProveOptions o;
   o.only_n = a.n;
   o.ladder_seconds = a.ladder_seconds;

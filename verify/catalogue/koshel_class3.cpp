@@ -141,6 +141,7 @@ MechanismCatalogue koshel_class3() {
                 "the Coriolis term of a prismatic pair is needed as soon as the guide moves (SPEC.md C, last bullet)", 4,
                 0},
       [](const MechanismContext& c) { return inverted(c, false); }, has_moving_guide_after_inversion});
+  for (auto& step : koshel_printed_chain()) cat.claims.push_back(std::move(step));
   return cat;
 }
 

@@ -18,6 +18,9 @@ MechanismCatalogue dijksman1966_compound();
 MechanismCatalogue fourbar_polygon();
 MechanismCatalogue koshel_class3();
 MechanismCatalogue dijksman1984_eightbar();
+/// Seed 003's printed arithmetic chain (2)-(17), one claim per step with the tolerance derived
+/// from the printed digits (koshel_printed_chain.cpp); part of koshel_class3.
+std::vector<MechanismClaim> koshel_printed_chain();
 
 /// The catalogues named by scene.catalogues; an unknown name is InputError(scene.source,
 /// "mechanism.catalogue", ...).

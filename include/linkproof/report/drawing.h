@@ -1,0 +1,80 @@
+// A drawing to scale, in world coordinates (x right, y up, the linkage's own units), made of a
+// few primitives, rendered to SVG (HTML and Markdown reports) or to a LaTeX picture (pdflatex,
+// with pict2e for arbitrary slopes). One model, two renderers: a figure is computed once.
+//
+// The view is the bounding box of every primitive that is not marked `auxiliary`, widened to
+// include auxiliary points (construction points such as Q_j) only while they lie within
+// `max_zoom_out` times that box: a point far away (Q_j near infinity) does not shrink the
+// linkage to a dot; it is listed in `off_view` with its coordinates instead.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace linkproof::report {
+
+struct Point2 {
+  double x = 0, y = 0;
+};
+
+enum class Stroke { Solid, Dashed, Thin };
+
+struct Segment {
+  Point2 a, b;
+  std::string color = "#222222";
+  Stroke stroke = Stroke::Solid;
+  bool arrow = false;  ///< arrow head at b (vectors of velocity and acceleration polygons)
+  std::string label;   ///< drawn at the middle, may be empty
+};
+
+struct Marker {
+  Point2 at;
+  std::string label;  ///< plain text, e.g. "K'_1" (renderers typeset the subscript)
+  std::string color = "#222222";
+  bool hollow = false;  ///< a joint (hollow circle) rather than a construction point (filled)
+  bool auxiliary = false;
+};
+
+/// A closed polygon (a link with three or more joints), lightly filled.
+struct Patch {
+  std::vector<Point2> points;
+  std::string color = "#cccccc";
+};
+
+/// An angle mark: an arc at `at` from direction `from` to direction `to` (counter-clockwise
+/// when the angle is positive), with a label (e.g. "beta_1").
+struct AngleMark {
+  Point2 at, from, to;  ///< from/to are direction vectors
+  std::string label;
+  std::string color = "#aa3300";
+};
+
+struct Drawing {
+  std::vector<Patch> patches;
+  std::vector<Segment> segments;
+  std::vector<AngleMark> angles;
+  std::vector<Marker> markers;
+  double max_zoom_out = 6;
+  /// Filled by view(): auxiliary markers left out of the view ("Q_2 at (-8, 31)").
+  std::vector<std::string> notes;
+};
+
+struct View {
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;  ///< world box
+  std::vector<std::string> off_view;      ///< labels of auxiliary markers outside it
+};
+
+/// The world box shown (see the header comment), with a margin.
+View compute_view(const Drawing& d);
+
+/// The drawing as a standalone SVG document; the larger side of the view is `width_px` pixels.
+std::string render_svg(const Drawing& d, double width_px = 640);
+
+/// The drawing as a LaTeX picture environment drawn by \pdfliteral (pdfTeX; no package needed);
+/// the larger side of the view is `width_cm`.
+std::string render_latex_picture(const Drawing& d, double width_cm = 12);
+
+/// "K'_1" -> TeX "K'_{1}", "beta_2" -> "\beta_{2}": labels of markers as TeX math.
+std::string label_tex(const std::string& label);
+
+}  // namespace linkproof::report

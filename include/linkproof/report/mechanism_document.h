@@ -1,0 +1,33 @@
+// The derivation report of a mechanism scene (any planar linkage of revolute and prismatic
+// pairs; SPEC A7, B, C, E), in this order:
+//   summary     mobility, loops, each claim with its verdict and what it rests on (exact);
+//   mechanism   the linkage drawn to scale (links as bars or plates, joints, sliders with their
+//               guides, tracer points) and the exact omega, omega-dot of every link and the
+//               velocity and acceleration of every joint and point;
+//   plans       (when asked) the velocity and acceleration plans: the image of every joint
+//               drawn from the origin o, each link's image joining its joints' images; for a
+//               four-bar also seed 001's acceleration polygon, head to tail as the textbook
+//               draws it;
+//   tables      the catalogues' tables (acceleration-polygon vectors, curvature centres, ...);
+//   terms, errata, reproduce as in the polygon report.
+#pragma once
+
+#include <string>
+
+#include "linkproof/mechanism/mechanism_check.h"
+#include "linkproof/report/document.h"
+
+namespace linkproof::report {
+
+struct MechanismReportOptions {
+  bool plans = false;        ///< add the velocity and acceleration plans
+  std::string scene_text;    ///< the scene file's text, shown as the counterexample of failing errata
+};
+
+Document build_mechanism_document(const MechanismScene& scene, const MechanismCheck& check,
+                                  const MechanismReportOptions& options);
+
+/// The linkage to scale: links, joints, sliders and guides, tracer points.
+Drawing mechanism_drawing(const MechanismScene& scene);
+
+}  // namespace linkproof::report

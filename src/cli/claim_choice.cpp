@@ -1,0 +1,29 @@
+// Choosing claims of a claim file and checking the proof options: shared by `prove` and
+// `report` on a claim file.
+#include "command.h"
+#include "linkproof/core/error.h"
+
+namespace linkproof::cli {
+
+std::vector<const DataClaim*> choose_claims(const ClaimFile& file, const std::vector<std::string>& ids) {
+  std::vector<const DataClaim*> chosen;
+  for (const auto& id : ids) {
+    const DataClaim* found = nullptr;
+    for (const auto& c : file.claims)
+      if (!found && (c.info.id == id || c.info.id.ends_with("." + id))) found = &c;
+    if (!found) throw InputError("<command line>", "--claim", "no claim '" + id + "' in " + file.source);
+    chosen.push_back(found);
+  }
+  if (chosen.empty())
+    for (const auto& c : file.claims) chosen.push_back(&c);
+  return chosen;
+}
+
+void check_prove_limits(const std::optional<int>& n, double ladder_seconds) {
+  if (n && (*n < 4 || *n > kMaxClaimSides))
+    throw InputError("<command line>", "--n", "must be between 4 and " + std::to_string(kMaxClaimSides));
+  if (ladder_seconds < 0 || ladder_seconds > 3600)
+    throw InputError("<command line>", "--ladder-seconds", "must be between 0 and 3600");
+}
+
+}  // namespace linkproof::cli

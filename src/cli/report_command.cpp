@@ -1,0 +1,170 @@
+// linkproof report SCENE|CLAIMS [--format html|md|tex|all] [--out DIR] [--claim ID]... [--n N]
+//                  [--ladder-seconds S] [--arith A] [--numerics] [--plans] [--katex DIR]
+// A derivation report (report/document.h) of a polygon scene, a mechanism scene, or a claim
+// file (the claims proved, report/proof_document.h), written to DIR as <stem>.html (one
+// self-contained file), <stem>.md (+ SVG figures beside it) or <stem>.tex.
+// Exit code: that of check / prove on the same input (0 as expected, 1 a claim failed, 3 error),
+// 2 for bad input.
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <regex>
+
+#include "build_info.h"
+#include "command.h"
+#include "dijksman1966.h"
+#include "linkproof/check/check.h"
+#include "linkproof/io/claim_file.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "linkproof/io/scene.h"
+#include "linkproof/report/mechanism_document.h"
+#include "linkproof/report/polygon_document.h"
+#include "linkproof/report/proof_document.h"
+#include "linkproof/report/prove_report.h"
+#include "linkproof/report/render.h"
+#include "mechanism_catalogues.h"
+
+namespace linkproof::cli {
+
+namespace {
+
+struct ReportArgs {
+  std::string input;
+  std::string format = "html";
+  std::string out = ".";
+  std::vector<std::string> claims;
+  std::optional<int> n;
+  double ladder_seconds = 1.0;
+  std::string arith = "exact";
+  bool numerics = false;
+  bool plans = false;
+  std::string katex = "/usr/share/javascript/katex";
+};
+
+// The command line that reproduces the report (options at their defaults are left out).
+std::string command_line(const ReportArgs& a) {
+  std::string c = "linkproof report " + a.input + " --format " + a.format;
+  if (a.out != ".") c += " --out " + a.out;
+  for (const auto& id : a.claims) c += " --claim " + id;
+  if (a.n) c += " --n " + std::to_string(*a.n);
+  if (a.ladder_seconds != 1.0) c += fmt::format(" --ladder-seconds {}", a.ladder_seconds);
+  if (a.arith != "exact") c += " --arith " + a.arith;
+  if (a.numerics) c += " --numerics";
+  if (a.plans) c += " --plans";
+  return c;
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text, std::ostream& out) {
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw InputError(path.string(), "--out", "cannot write the file");
+  f << text;
+  if (!f) throw InputError(path.string(), "--out", "writing failed");
+  fmt::print(out, "wrote {}\n", path.string());
+}
+
+void write_document(const ReportArgs& a, const report::Document& d, std::ostream& out, std::ostream& err) {
+  namespace fs = std::filesystem;
+  const fs::path dir(a.out);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(a.out, "--out", "cannot create the directory: " + ec.message());
+  const std::string stem = fs::path(a.input).stem().string();
+  const bool all = a.format == "all";
+  if (all || a.format == "html") {
+    const auto katex = report::load_katex_assets(a.katex);
+    if (!katex)
+      fmt::print(err, "linkproof: warning: KaTeX not found in {} (Debian package libjs-katex); the HTML shows TeX source\n",
+                 a.katex);
+    write_file(dir / (stem + ".html"), report::render_html(d, katex), out);
+  }
+  if (all || a.format == "md") {
+    std::map<std::string, std::string> figures;
+    const std::string md = report::render_markdown(d, figures);
+    write_file(dir / (stem + ".md"), md, out);
+    for (const auto& [name, svg] : figures) write_file(dir / name, svg, out);
+  }
+  if (all || a.format == "tex") write_file(dir / (stem + ".tex"), report::render_latex(d), out);
+}
+
+report::Reproduce reproduce_of(const ReportArgs& a, std::string seed) {
+  return {command_line(a), std::move(seed), LINKPROOF_VERSION, LINKPROOF_GIT_COMMIT};
+}
+
+int report_claim_file(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
+  const ClaimFile file = parse_claim_file(text, a.input);
+  check_prove_limits(a.n, a.ladder_seconds);
+  const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
+  ProveOptions o;
+  o.only_n = a.n;
+  o.ladder_seconds = a.ladder_seconds;
+  GroundTruthEngine engine;
+  std::vector<ProofResult> results;
+  for (const DataClaim* c : chosen)
+    if (!a.n || c->info.applies_to(*a.n)) results.push_back(prove_claim(engine, *c, o));
+  if (results.empty()) throw InputError("<command line>", "--n", "no chosen claim applies to n = " + std::to_string(*a.n));
+  report::Document d = report::build_proof_document(file, results);
+  d.reproduce = reproduce_of(a, std::to_string(o.search.seed) + " (counterexample search)");
+  report::add_reproduce_section(d);
+  write_document(a, d, out, err);
+  return exit_status(results);
+}
+
+int report_mechanism(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
+  const MechanismScene scene = parse_mechanism_scene(text, a.input);
+  const MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), Arithmetic::Exact);
+  report::Document d = report::build_mechanism_document(scene, check, {a.plans, text});
+  d.reproduce = reproduce_of(a, "none (deterministic)");
+  report::add_reproduce_section(d);
+  write_document(a, d, out, err);
+  return exit_status(check);
+}
+
+int report_polygon(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
+  const Arithmetic arith = arithmetic_or_throw(a.arith);
+  const PolygonScene scene = parse_polygon_scene(text, a.input);
+  GroundTruthEngine engine;
+  const auto& catalogue = dijksman1966::catalogue();
+  const PolygonCheck check = check_polygon(engine, catalogue, scene.name, scene.polygon, scene.rates, arith);
+  report::Document d = report::build_polygon_document(engine, catalogue, scene, check, {a.numerics, text});
+  d.reproduce = reproduce_of(a, "none (deterministic)");
+  report::add_reproduce_section(d);
+  write_document(a, d, out, err);
+  return exit_status(check);
+}
+
+bool is_claim_file_text(const std::string& text) {
+  static const std::regex top_level_claims(R"((^|\n)claims\s*:)");
+  return std::regex_search(text, top_level_claims);
+}
+
+int run_report(const ReportArgs& a, std::ostream& out, std::ostream& err) {
+  if (a.format != "html" && a.format != "md" && a.format != "tex" && a.format != "all")
+    throw InputError("<command line>", "--format", "must be html, md, tex or all, not '" + a.format + "'");
+  const std::string text = read_scene_text(a.input);
+  if (is_mechanism_scene_text(text)) return report_mechanism(a, text, out, err);
+  if (is_claim_file_text(text)) return report_claim_file(a, text, out, err);
+  return report_polygon(a, text, out, err);
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app, Action& action) {
+  auto* r = app.add_subcommand("report", "write a derivation report (HTML, Markdown or LaTeX) of a scene or a claim file");
+  auto& a = bind_action<ReportArgs>(r, action, run_report);
+  r->add_option("input", a.input, "polygon scene, mechanism scene, or claim file (proved), e.g. verify/scenes/pentagon.yaml")
+      ->required();
+  r->add_option("--format", a.format, "html (default: one self-contained file), md (+ SVG files), tex, or all");
+  r->add_option("--out", a.out, "directory to write into (created; default .)");
+  r->add_option("--claim", a.claims, "claim files: the claim to prove (repeatable; default every claim), e.g. eq22");
+  r->add_option("--n", a.n, "claim files: prove for this number of sides only");
+  r->add_option("--ladder-seconds", a.ladder_seconds, "claim files: time for per-n proofs per claim (default 1)");
+  r->add_option("--arith", a.arith, "polygon scenes: the arithmetic of the check (default exact)");
+  r->add_flag("--numerics", a.numerics, "polygon scenes: add the numerics section (every floating-point arithmetic)");
+  r->add_flag("--plans", a.plans, "mechanism scenes: add the velocity and acceleration plans");
+  r->add_option("--katex", a.katex, "directory of KaTeX (default Debian's /usr/share/javascript/katex)");
+}
+
+}  // namespace linkproof::cli

@@ -1,0 +1,229 @@
+#include "linkproof/report/mechanism_document.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "linkproof/mechanism/fourbar_polygon.h"
+#include "linkproof/report/polygon_document.h"
+#include "svg_plot.h"
+
+namespace linkproof::report {
+
+namespace {
+
+Point2 to_point(const Vec2<Rational>& p) { return {cln::double_approx(p.x), cln::double_approx(p.y)}; }
+
+// A number of the check's text form ("p/q" exact, or a decimal) as a double.
+double number(const std::string& s) {
+  try {
+    return cln::double_approx(parse_rational(s));
+  } catch (...) {
+    return std::nan("");
+  }
+}
+
+// The joints of link `k` (positions), ordered by angle around their centroid, so that a plate
+// with three or more joints is drawn as a simple polygon.
+std::vector<Point2> link_outline(const Linkage& g, int k) {
+  std::vector<Point2> pts;
+  for (const auto& j : g.joints())
+    if (j.links[0] == k || j.links[1] == k) {
+      const Point2 p = to_point(j.at);
+      const bool seen = std::any_of(pts.begin(), pts.end(), [&](const Point2& q) {
+        return std::abs(q.x - p.x) + std::abs(q.y - p.y) < 1e-12;
+      });
+      if (!seen) pts.push_back(p);
+    }
+  Point2 c{0, 0};
+  for (const auto& p : pts) c.x += p.x / static_cast<double>(pts.size()), c.y += p.y / static_cast<double>(pts.size());
+  std::sort(pts.begin(), pts.end(), [&](const Point2& a, const Point2& b) {
+    return std::atan2(a.y - c.y, a.x - c.x) < std::atan2(b.y - c.y, b.x - c.x);
+  });
+  return pts;
+}
+
+Section summary_section(const MechanismScene& scene, const MechanismCheck& check) {
+  Section s{"summary", "Summary", {}, {}};
+  int as_expected = 0;
+  for (const auto& c : check.claims) as_expected += c.is_as_expected() ? 1 : 0;
+  s.blocks.push_back(paragraph(plain(fmt::format(
+      "Scene {} ({}): {} links, {} joints, {} independent loops; mobility {} (Gruebler {}), velocity-system rank {}, "
+      "condition number {:.3g}. The motion is the exact solution of the differentiated loop closures; {} of {} "
+      "claims as expected.",
+      scene.name, scene.source, scene.linkage.link_count(), scene.linkage.joint_count(), check.loops, check.mobility,
+      check.grubler, check.rank, check.condition, as_expected, check.claims.size()))));
+  s.blocks.push_back(table_block(claim_summary_table(check.claims, Arithmetic::Exact)));
+  if (!check.not_applicable.empty()) {
+    std::string na;
+    for (const auto& id : check.not_applicable) na += (na.empty() ? "" : ", ") + id;
+    s.blocks.push_back(paragraph(plain("Not applicable to this mechanism: " + na + ".")));
+  }
+  return s;
+}
+
+Section mechanism_section(const MechanismScene& scene, const MechanismCheck& check) {
+  Section s{"mechanism", "Mechanism", {}, {}};
+  s.blocks.push_back(figure_block({scene.name + "-linkage",
+                                   "The linkage to scale: links as bars (two joints) or plates (three or more), "
+                                   "joints as circles, sliders on their guides (dashed), tracer points filled.",
+                                   mechanism_drawing(scene)}));
+  Table links{{plain("link"), tex("\\omega"), tex("\\dot\\omega")}, {}};
+  for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
+    links.rows.push_back({plain(check.link_names[k] + (static_cast<int>(k) == scene.linkage.ground() ? " (ground)" : "")),
+                          plain(check.omega[k]), plain(check.omega_dot[k])});
+  s.blocks.push_back(paragraph(plain("Angular velocity and acceleration of every link relative to the ground (exact):")));
+  s.blocks.push_back(table_block(std::move(links)));
+  Table pts{{plain("joint / point"), plain("velocity"), plain("acceleration"), plain("sliding rate, acceleration")}, {}};
+  const auto add = [&](const MechanismCheck::PointMotion& p) {
+    pts.rows.push_back({plain(p.name), plain("(" + p.v[0] + ", " + p.v[1] + ")"), plain("(" + p.a[0] + ", " + p.a[1] + ")"),
+                        plain(p.slide.empty() ? "" : p.slide + ", " + p.slide_dot)});
+  };
+  for (const auto& p : check.joints) add(p);
+  for (const auto& p : check.points) add(p);
+  s.blocks.push_back(table_block(std::move(pts)));
+  return s;
+}
+
+// A plan (velocity or acceleration): every joint's vector drawn as a point from the origin o,
+// each link's image joining the images of its joints.
+Drawing plan_drawing(const MechanismScene& scene, const MechanismCheck& check, bool acceleration) {
+  const Linkage& g = scene.linkage;
+  std::map<std::string, Point2> image;
+  for (const auto& p : check.joints) {
+    const auto& v = acceleration ? p.a : p.v;
+    image[p.name] = {number(v[0]), number(v[1])};
+  }
+  Drawing d;
+  d.max_zoom_out = 1;
+  const Point2 origin{0, 0};
+  for (int k = 0; k < g.link_count(); ++k) {
+    if (k == g.ground()) continue;
+    std::vector<Point2> pts;
+    for (const auto& j : g.joints())
+      if ((j.links[0] == k || j.links[1] == k) && j.type == JointType::Revolute && image.count(j.name))
+        pts.push_back(image[j.name]);
+    for (size_t a = 0; a + 1 < pts.size(); ++a)
+      for (size_t b = a + 1; b < pts.size(); ++b)
+        d.segments.push_back({pts[a], pts[b], palette_color(static_cast<size_t>(k)), Stroke::Thin, false, ""});
+  }
+  for (const auto& [name, p] : image) {
+    d.segments.push_back({origin, p, "#555555", Stroke::Solid, true, ""});
+    d.markers.push_back({p, name, "#222222", false, false});
+  }
+  d.markers.push_back({origin, "o", "#000000", true, false});
+  return d;
+}
+
+// Seed 001: the four-bar's acceleration polygon head to tail, in the order of the textbook's
+// rearranged equation A_A^n + A_A^t + A_BA^n - A_B^n + A_BA^t - A_B^t = 0.
+std::optional<Drawing> fourbar_polygon_drawing(const MechanismScene& scene) {
+  const auto roles = identify_fourbar(scene.linkage, scene.inputs);
+  if (!roles) return std::nullopt;
+  const Linkage& g = scene.linkage;
+  try {
+    const auto p = construct_fourbar_polygon(g.joint(roles->O2).at, g.joint(roles->A).at, g.joint(roles->B).at,
+                                             g.joint(roles->O4).at, scene.inputs[0].rate, scene.inputs[0].rate_dot);
+    Drawing d;
+    d.max_zoom_out = 1;
+    const std::pair<const char*, Vec2<Rational>> chain[] = {{"A_A^n", p.A_A_n},   {"A_A^t", p.A_A_t},
+                                                            {"A_BA^n", p.A_BA_n}, {"-A_B^n", -p.A_B_n},
+                                                            {"A_BA^t", p.A_BA_t}, {"-A_B^t", -p.A_B_t}};
+    Vec2<Rational> at{Rational(0), Rational(0)};
+    size_t k = 0;
+    for (const auto& [label, v] : chain) {
+      const Vec2<Rational> next = at + v;
+      d.segments.push_back({to_point(at), to_point(next), palette_color(k++), Stroke::Solid, true, label});
+      at = next;
+    }
+    d.segments.push_back({{0, 0}, to_point(p.A_A), "#888888", Stroke::Dashed, false, "A_A"});
+    d.markers.push_back({{0, 0}, "O_A", "#000000", true, false});
+    return d;
+  } catch (const UndefinedQuantity&) {
+    return std::nullopt;
+  }
+}
+
+Section plans_section(const MechanismScene& scene, const MechanismCheck& check) {
+  Section s{"plans", "Velocity and acceleration plans", {}, {}};
+  s.blocks.push_back(figure_block({scene.name + "-velocity-plan",
+                                   "Velocity plan: the velocity of every joint drawn from o (to its own scale); the "
+                                   "image of each link joins its joints' images.",
+                                   plan_drawing(scene, check, false)}));
+  s.blocks.push_back(figure_block({scene.name + "-acceleration-plan", "Acceleration plan, drawn the same way.",
+                                   plan_drawing(scene, check, true)}));
+  if (auto fb = fourbar_polygon_drawing(scene))
+    s.blocks.push_back(figure_block({scene.name + "-acceleration-polygon",
+                                     "The four-bar's acceleration polygon as the textbook draws it (seed 001): from the "
+                                     "acceleration origin O_A, head to tail, A_A^n, A_A^t, A_BA^n, -A_B^n, then the "
+                                     "tangential A_BA^t and -A_B^t close it; the dashed vector is A_A.",
+                                     *fb}));
+  return s;
+}
+
+Section tables_section(const MechanismCheck& check) {
+  Section s{"tables", "Catalogue tables", {}, {}};
+  for (const auto& t : check.tables) {
+    Table out{{plain("quantity"), plain("value (exact)")}, {}};
+    for (const auto& [k, v] : t.rows) out.rows.push_back({plain(k), plain(v)});
+    Section sub{"table-" + t.title, t.title, {}, {}};
+    sub.blocks.push_back(table_block(std::move(out)));
+    s.subsections.push_back(std::move(sub));
+  }
+  return s;
+}
+
+}  // namespace
+
+Drawing mechanism_drawing(const MechanismScene& scene) {
+  const Linkage& g = scene.linkage;
+  Drawing d;
+  for (int k = 0; k < g.link_count(); ++k) {
+    const std::vector<Point2> pts = link_outline(g, k);
+    const std::string col = k == g.ground() ? "#888888" : palette_color(static_cast<size_t>(k));
+    if (k == g.ground()) continue;  // the frame is shown by its pivots, not as a body
+    if (pts.size() >= 3) d.patches.push_back({pts, col});
+    for (size_t a = 0; a < pts.size(); ++a) {
+      if (pts.size() == 2 && a == 1) break;
+      Segment seg{pts[a], pts[(a + 1) % pts.size()], col, Stroke::Solid, false, ""};
+      if (a == 0) seg.label = g.link_name(k);
+      d.segments.push_back(seg);
+    }
+  }
+  for (const auto& j : g.joints()) {
+    const Point2 p = to_point(j.at);
+    if (j.type == JointType::Prismatic) {
+      const double len = std::hypot(cln::double_approx(j.axis.x), cln::double_approx(j.axis.y));
+      const double ux = cln::double_approx(j.axis.x) / len, uy = cln::double_approx(j.axis.y) / len;
+      // The guide: the line through the joint along its axis, 15 % of the drawing's extent each way.
+      const View v = compute_view(d);
+      const double r = 0.15 * std::max(v.x1 - v.x0, v.y1 - v.y0);
+      d.segments.push_back({{p.x - r * ux, p.y - r * uy}, {p.x + r * ux, p.y + r * uy}, "#555555", Stroke::Dashed, false,
+                            "guide " + j.name});
+    }
+    const bool grounded = j.links[0] == g.ground() || j.links[1] == g.ground();
+    d.markers.push_back({p, j.name, grounded ? "#000000" : "#333333", true, false});
+  }
+  for (const auto& pt : scene.points) d.markers.push_back({to_point(pt.at), pt.name, "#aa0000", false, false});
+  return d;
+}
+
+Document build_mechanism_document(const MechanismScene& scene, const MechanismCheck& check,
+                                  const MechanismReportOptions& options) {
+  Document d;
+  d.title = "Mechanism report: " + scene.name;
+  d.subtitle = "exact kinematics of a planar linkage; linkproof";
+  d.sections.push_back(summary_section(scene, check));
+  d.sections.push_back(mechanism_section(scene, check));
+  if (options.plans) d.sections.push_back(plans_section(scene, check));
+  if (!check.tables.empty()) d.sections.push_back(tables_section(check));
+  Section terms = terms_section(check.claims);
+  if (!terms.subsections.empty()) d.sections.push_back(std::move(terms));
+  Section errata = errata_section(check.claims, options.scene_text);
+  if (!errata.subsections.empty()) d.sections.push_back(std::move(errata));
+  return d;
+}
+
+}  // namespace linkproof::report

@@ -1,0 +1,272 @@
+#include "linkproof/report/polygon_document.h"
+
+#include <fmt/format.h>
+#include <ginac/ginac.h>
+
+#include <chrono>
+#include <sstream>
+
+#include "linkproof/geometry/construction.h"
+#include "svg_plot.h"
+
+namespace linkproof::report {
+
+namespace {
+
+using GiNaC::ex;
+
+std::string latex_of(const ex& e) {
+  std::ostringstream o;
+  o << GiNaC::latex << e;
+  return o.str();
+}
+
+/// An exact rational as TeX: "-7/3" -> "-\frac{7}{3}".
+std::string rational_tex(const Rational& q) {
+  const std::string t = format_rational(q);
+  const auto slash = t.find('/');
+  if (slash == std::string::npos) return t;
+  const bool neg = t[0] == '-';
+  return std::string(neg ? "-" : "") + "\\frac{" + t.substr(neg ? 1 : 0, slash - (neg ? 1 : 0)) + "}{" +
+         t.substr(slash + 1) + "}";
+}
+
+std::string point_tex(const Vec2<Rational>& p) { return "(" + rational_tex(p.x) + ",\\ " + rational_tex(p.y) + ")"; }
+
+Point2 to_point(const Vec2<Rational>& p) { return {cln::double_approx(p.x), cln::double_approx(p.y)}; }
+
+template <class V>
+Rich defined_tex(const Defined<V>& d, std::string (*f)(const V&)) {
+  if (d.has_value()) return tex(f(d.get()));
+  return plain("undefined: " + d.quantity());
+}
+
+// ---------------------------------------------------------------- summary
+Section summary_section(const PolygonScene& scene, const PolygonCheck& check) {
+  Section s{"summary", "Summary", {}, {}};
+  int as_expected = 0;
+  for (const auto& c : check.claims) as_expected += c.is_as_expected() ? 1 : 0;
+  s.blocks.push_back(paragraph(
+      {text(fmt::format("Scene {} ({}): an n-side polygon with ", scene.name, scene.source)),
+       math(fmt::format("n = {}", check.n)), text(", side "), math(fmt::format("{}", check.n)),
+       text(" fixed; the claims of Dijksman (1966) checked in " + std::string(to_string(check.arithmetic)) +
+            " arithmetic: "),
+       text(fmt::format("{} of {} as expected. ", as_expected, check.claims.size())),
+       text("Each verdict rests on this one instance; a proof for every n is made by "),
+       text("`linkproof report` on the claim file (prove).")}));
+  if (check.dead_centre)
+    s.blocks.push_back(paragraph(plain("Dead centre: " + check.dead_centre_reason +
+                                       ". The ground truth does not exist here; every claim is undefined.")));
+  s.blocks.push_back(table_block(claim_summary_table(check.claims, check.arithmetic)));
+  if (!check.not_applicable.empty()) {
+    std::string na;
+    for (const auto& id : check.not_applicable) na += (na.empty() ? "" : ", ") + id;
+    s.blocks.push_back(paragraph(plain(fmt::format("Not applicable at n = {}: {}.", check.n, na))));
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------- derivation
+Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene, const PolygonCheck& check) {
+  const int n = check.n, m = n - 3;
+  Section s{"derivation", "Derivation", {}, {}};
+  Table values{{plain("side j"), tex("\\omega_{j," + std::to_string(n) + "}"),
+                tex("\\dot\\omega_{j," + std::to_string(n) + "}")},
+               {}};
+  for (int j = 1; j <= n; ++j) {
+    const auto& w = check.omega[static_cast<size_t>(j - 1)];
+    const auto& wd = check.omega_dot[static_cast<size_t>(j - 1)];
+    values.rows.push_back({plain(std::to_string(j) + (j <= m ? " (input)" : j == n ? " (fixed)" : " (solved)")),
+                           plain(w ? *w : "undefined"), plain(wd ? *wd : "undefined")});
+  }
+  if (n > kSymbolicReportMaxN) {
+    s.blocks.push_back(paragraph(
+        {text(fmt::format("At n = {} the derived expressions have O(n) terms; they are not printed (printed for n ≤ {}). "
+                          "The engine's result agrees with SPEC A2: ",
+                          n, kSymbolicReportMaxN))}));
+    s.blocks.push_back(display_math("\\omega_{n-1} D = \\sum_j \\omega_j (r_j \\times r_{n-2}),\\qquad "
+                                    "\\omega_{n-2} D = \\sum_j \\omega_j (r_{n-1} \\times r_j)"));
+    s.blocks.push_back(paragraph(plain("Exact values on this scene:")));
+    s.blocks.push_back(table_block(std::move(values)));
+    return s;
+  }
+  const auto& d = engine.derivation(n);
+  const LoopSolution& sol = d.solution;
+  const PolygonSymbols& sym = d.symbols;
+  const std::string N = std::to_string(n), n1 = std::to_string(n - 1), n2 = std::to_string(n - 2);
+  s.blocks.push_back(paragraph({text("Loop closure (eq. 1), side "), math(N), text(" fixed ("),
+                                math("\\theta_{" + N + "}"), text(" constant):")}));
+  s.blocks.push_back(display_math(latex_of(sol.closure[0]) + " = 0"));
+  s.blocks.push_back(display_math(latex_of(sol.closure[1]) + " = 0"));
+  s.blocks.push_back(paragraph({text("First time derivative, with "), math("L_j\\cos\\theta_j = x_j"), text(", "),
+                                math("L_j\\sin\\theta_j = y_j"), text(" (the side components of "),
+                                math("r_j"), text("):")}));
+  s.blocks.push_back(display_math(latex_of(sol.velocity[0]) + " = 0"));
+  s.blocks.push_back(display_math(latex_of(sol.velocity[1]) + " = 0"));
+  s.blocks.push_back(paragraph(plain("Second time derivative:")));
+  s.blocks.push_back(display_math(latex_of(sol.acceleration[0]) + " = 0"));
+  s.blocks.push_back(display_math(latex_of(sol.acceleration[1]) + " = 0"));
+  s.blocks.push_back(paragraph({text("Solved by Cramer's rule with "), math("D = r_{" + n2 + "}\\times r_{" + n1 + "}"),
+                                text(" = "), math(latex_of(sol.determinant)), text(":")}));
+  s.blocks.push_back(display_math("\\omega_{" + n1 + "," + N + "} = " + latex_of(sol.omega_n1.normal())));
+  s.blocks.push_back(display_math("\\omega_{" + n2 + "," + N + "} = " + latex_of(sol.omega_n2.normal())));
+  // omega-dot in the structural form the engine solves (omega of the solved sides as symbols).
+  const ex wd1 = sol.omega_dot_n1, wd2 = sol.omega_dot_n2;
+  s.blocks.push_back(display_math("\\dot\\omega_{" + n1 + "," + N + "} = " + latex_of(wd1)));
+  s.blocks.push_back(display_math("\\dot\\omega_{" + n2 + "," + N + "} = " + latex_of(wd2)));
+
+  // Coefficients of omega-dot_{n-1,n} in the input rates (ground_truth.h: by differentiation).
+  s.blocks.push_back(paragraph({text("Coefficients of "), math("\\dot\\omega_{" + n1 + "," + N + "}"),
+                                text(" in the input rates (by differentiation; normalised), and their values here:")}));
+  const TermCoefficients<Rational> values_here = engine.coefficients(scene.polygon).first;
+  std::vector<Rational> flat = values_here.omega_dot;
+  flat.insert(flat.end(), values_here.omega_sq.begin(), values_here.omega_sq.end());
+  flat.insert(flat.end(), values_here.omega_pair.begin(), values_here.omega_pair.end());
+  Table t{{plain("monomial"), plain("coefficient"), plain("value")}, {}};
+  std::vector<std::pair<std::string, ex>> rows;
+  for (int j = 1; j <= m; ++j)
+    rows.emplace_back("\\dot\\omega_{" + std::to_string(j) + "}", wd1.diff(sym.omega_dot(j)));
+  for (int j = 1; j <= m; ++j)
+    rows.emplace_back("\\omega_{" + std::to_string(j) + "}^2", wd1.diff(sym.omega(j), 2) / 2);
+  for (int j = 1; j <= m; ++j)
+    for (int l = j + 1; l <= m; ++l)
+      rows.emplace_back("\\omega_{" + std::to_string(j) + "}\\omega_{" + std::to_string(l) + "}",
+                        wd1.diff(sym.omega(j)).diff(sym.omega(l)));
+  for (size_t k = 0; k < rows.size(); ++k)
+    t.rows.push_back({tex(rows[k].first), tex(latex_of(rows[k].second.normal())),
+                      tex(k < flat.size() ? rational_tex(flat[k]) : "")});
+  s.blocks.push_back(table_block(std::move(t)));
+  s.blocks.push_back(paragraph(plain("Exact values on this scene:")));
+  s.blocks.push_back(table_block(std::move(values)));
+  return s;
+}
+
+// ---------------------------------------------------------------- construction
+Drawing construction_drawing(const Polygon<Rational>& p, const std::vector<FourBarConstruction<Rational>>& cs) {
+  const int n = p.n();
+  Drawing d;
+  for (int j = 1; j <= n; ++j) {
+    Segment side{to_point(p.joint(j)), to_point(p.joint(j + 1))};
+    if (j == n) side.color = "#888888", side.label = "fixed";
+    d.segments.push_back(side);
+  }
+  const Point2 kn2 = to_point(p.joint(n - 2)), kn1 = to_point(p.joint(n - 1)), kn = to_point(p.joint(n));
+  for (const auto& c : cs) {
+    const std::string col = palette_color(static_cast<size_t>(c.j));
+    const std::string J = std::to_string(c.j);
+    const Point2 kp = to_point(c.k_prime);
+    d.segments.push_back({kp, kn2, col, Stroke::Solid, true, ""});  // r_j moved to end in K_{n-2}
+    d.markers.push_back({kp, "K'_" + J, col, false, false});
+    if (c.q.has_value()) {
+      const Point2 q = to_point(c.q.get());
+      d.segments.push_back({kn, q, col, Stroke::Dashed, false, ""});   // line K_n K'_j
+      d.segments.push_back({kn1, q, col, Stroke::Dashed, false, ""});  // line K_{n-2} K_{n-1}
+      d.markers.push_back({q, "Q_" + J, col, false, true});
+      if (c.p_prime.has_value()) {
+        const Point2 pp = to_point(c.p_prime.get());
+        d.angles.push_back({q, {kn1.x - q.x, kn1.y - q.y}, {pp.x - q.x, pp.y - q.y}, "beta_" + J, col});
+      }
+    }
+    if (c.p_prime.has_value()) {
+      const Point2 pp = to_point(c.p_prime.get());
+      d.segments.push_back({kn, pp, col, Stroke::Thin, false, ""});  // line K_{n-1} K_n
+      d.segments.push_back({kp, pp, col, Stroke::Thin, false, ""});  // line K'_j K_{n-2}
+      d.markers.push_back({pp, "P'_" + J, col, false, true});
+    }
+  }
+  for (int j = 1; j <= n; ++j) d.markers.push_back({to_point(p.joint(j)), "K_" + std::to_string(j), "#222222", true, false});
+  return d;
+}
+
+Section construction_section(const PolygonScene& scene) {
+  const Polygon<Rational>& p = scene.polygon;
+  const int n = p.n();
+  Section s{"construction", "Construction", {}, {}};
+  std::vector<FourBarConstruction<Rational>> cs;
+  for (int j = 1; j <= n - 3; ++j) cs.push_back(construct_four_bar(p, j));
+  s.blocks.push_back(paragraph(
+      {text("Four-bar j is "), math("K'_j K_{n-2} K_{n-1} K_n"), text(" with "), math("K'_j = K_{n-2} - r_j"),
+       text("; "), math("Q_j = K_{n-2}K_{n-1} \\cap K_nK'_j"), text(", "), math("P'_j = K_{n-1}K_n \\cap K'_jK_{n-2}"),
+       text("; the ratios are directed segments and "), math("\\beta_j > 0"),
+       text(" iff P'_j → Q_j → K_{n-1} is counter-clockwise (SPEC A3). Exact values:")}));
+  Table t{{plain("j"), tex("K'_j"), tex("Q_j"), tex("P'_j"), tex("i_{n-1,j}"), tex("i_{n-2,j}"), tex("\\cot\\beta_j"),
+           tex("\\lambda_j")},
+          {}};
+  for (const auto& c : cs)
+    t.rows.push_back({plain(std::to_string(c.j)), tex(point_tex(c.k_prime)), defined_tex(c.q, &point_tex),
+                      defined_tex(c.p_prime, &point_tex), defined_tex(c.i_out, &rational_tex),
+                      defined_tex(c.i_cpl, &rational_tex), defined_tex(c.cot_beta, &rational_tex),
+                      defined_tex(c.lambda, &rational_tex)});
+  s.blocks.push_back(table_block(std::move(t)));
+  const Rational D = p.dead_centre_determinant();
+  if (!cln::zerop(D)) {
+    const Vec2<Rational> a = p.side(n - 2), b = p.side(n - 1);
+    s.blocks.push_back(paragraph({text("The signed angle "), math("\\varphi = (r_{n-2}, r_{n-1})"), text(": "),
+                                  math("D = " + rational_tex(D)), text(", "),
+                                  math("\\cot\\varphi = " + rational_tex(dot(a, b) / D)), text(", "),
+                                  math("|r_{n-2}|^2/D = " + rational_tex(norm2(a) / D)), text(".")}));
+  }
+  Figure f{scene.name + "-construction",
+           "The polygon to scale (side " + std::to_string(n) +
+               " fixed, grey); per input side j in its colour: r_j moved to end in K_{n-2} (arrow from K'_j), the lines "
+               "K_nK'_j and K_{n-2}K_{n-1} (dashed) meeting in Q_j, the lines K_{n-1}K_n and K'_jK_{n-2} (thin) "
+               "meeting in P'_j, and the angle beta_j at Q_j.",
+           construction_drawing(p, cs)};
+  s.blocks.push_back(figure_block(std::move(f)));
+  return s;
+}
+
+// ---------------------------------------------------------------- numerics
+Section numerics_section(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const PolygonScene& scene) {
+  Section s{"numerics", "Numerics", {}, {}};
+  s.blocks.push_back(paragraph(plain(
+      "Every claim re-checked in each floating-point arithmetic with running error bounds: the largest derived "
+      "relative error bound over the claims that hold, the verdicts that differ from the exact ones, and the run time "
+      "of the whole check (wall clock, one run).")));
+  const PolygonCheck exact = check_polygon(engine, catalogue, scene.name, scene.polygon, scene.rates, Arithmetic::Exact);
+  Table t{{plain("arithmetic"), plain("largest relative bound"), plain("verdicts differing from exact"),
+           plain("time (ms)")},
+          {}};
+  for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble, Arithmetic::Mp30, Arithmetic::Mp100}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const PolygonCheck c = check_polygon(engine, catalogue, scene.name, scene.polygon, scene.rates, a);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    double worst = 0;
+    int differing = 0;
+    for (size_t k = 0; k < c.claims.size(); ++k) {
+      if (c.claims[k].verdict == Verdict::Holds) worst = std::max(worst, c.claims[k].headline.relative_error_bound);
+      if (k < exact.claims.size() && c.claims[k].verdict != exact.claims[k].verdict) ++differing;
+    }
+    t.rows.push_back({plain(std::string(to_string(a))), plain(fmt::format("{:.3g}", worst)),
+                      plain(std::to_string(differing)), plain(fmt::format("{:.1f}", ms))});
+  }
+  s.blocks.push_back(table_block(std::move(t)));
+  return s;
+}
+
+}  // namespace
+
+Drawing polygon_construction_drawing(const Polygon<Rational>& polygon) {
+  std::vector<FourBarConstruction<Rational>> cs;
+  for (int j = 1; j <= polygon.n() - 3; ++j) cs.push_back(construct_four_bar(polygon, j));
+  return construction_drawing(polygon, cs);
+}
+
+Document build_polygon_document(GroundTruthEngine& engine, const std::vector<Claim>& catalogue,
+                                const PolygonScene& scene, const PolygonCheck& check,
+                                const PolygonReportOptions& options) {
+  Document d;
+  d.title = "Derivation report: " + scene.name;
+  d.subtitle = fmt::format("Dijksman (1966), the n-side polygon (n = {}); linkproof", check.n);
+  d.sections.push_back(summary_section(scene, check));
+  if (!check.dead_centre) d.sections.push_back(derivation_section(engine, scene, check));
+  d.sections.push_back(construction_section(scene));
+  Section terms = terms_section(check.claims);
+  if (!terms.subsections.empty()) d.sections.push_back(std::move(terms));
+  Section errata = errata_section(check.claims, options.scene_text);
+  if (!errata.subsections.empty()) d.sections.push_back(std::move(errata));
+  if (options.numerics) d.sections.push_back(numerics_section(engine, catalogue, scene));
+  return d;
+}
+
+}  // namespace linkproof::report

@@ -1,0 +1,75 @@
+// The drawing model: the view keeps the linkage readable, and both renderers draw every primitive.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "linkproof/report/drawing.h"
+
+namespace linkproof::report {
+namespace {
+
+Drawing unit_square_with(Point2 far) {
+  Drawing d;
+  d.segments.push_back(Segment{{0, 0}, {1, 0}, "#222222", Stroke::Solid, false, ""});
+  d.segments.push_back(Segment{{1, 0}, {1, 1}, "#222222", Stroke::Solid, false, ""});
+  d.markers.push_back({{0, 0}, "K_1", "#222222", true, false});
+  d.markers.push_back({far, "Q_1", "#aa0000", false, true});
+  return d;
+}
+
+TEST(ReportDrawing, ViewIncludesNearConstructionPoints) {
+  const View v = compute_view(unit_square_with({3, 2}));
+  EXPECT_LE(v.x0, 0);
+  EXPECT_GE(v.x1, 3);
+  EXPECT_GE(v.y1, 2);
+  EXPECT_TRUE(v.off_view.empty());
+}
+
+TEST(ReportDrawing, FarConstructionPointIsListedNotShrinkingTheLinkage) {
+  const View v = compute_view(unit_square_with({1e6, 0}));
+  EXPECT_LT(v.x1, 10);  // the unit square keeps most of the figure
+  ASSERT_EQ(v.off_view.size(), 1u);
+  EXPECT_NE(v.off_view[0].find("Q_1"), std::string::npos);
+}
+
+TEST(ReportDrawing, SvgHasEverySegmentMarkerAndSubscriptLabel) {
+  const std::string svg = render_svg(unit_square_with({3, 2}));
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  size_t lines = 0, circles = 0;
+  for (size_t at = svg.find("<line"); at != std::string::npos; at = svg.find("<line", at + 1)) ++lines;
+  for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  EXPECT_EQ(lines, 2u);
+  EXPECT_EQ(circles, 2u);
+  EXPECT_NE(svg.find("K<tspan baseline-shift=\"sub\""), std::string::npos);
+}
+
+TEST(ReportDrawing, SvgPutsWorldYUpwards) {
+  Drawing d;
+  d.segments.push_back(Segment{{0, 0}, {0, 10}, "#222222", Stroke::Solid, false, ""});
+  const std::string svg = render_svg(d, 100);
+  // The world point (0, 10) is above (0, 0): a smaller SVG y.
+  double y1 = 0, y2 = 0;
+  ASSERT_EQ(std::sscanf(svg.c_str() + svg.find("y1=\""), "y1=\"%lf\"", &y1), 1);
+  ASSERT_EQ(std::sscanf(svg.c_str() + svg.find("y2=\""), "y2=\"%lf\"", &y2), 1);
+  EXPECT_LT(y2, y1);
+}
+
+TEST(ReportDrawing, LatexPictureDrawsWithPdfLiteralAndTypesetsLabels) {
+  Drawing d = unit_square_with({3, 2});
+  d.angles.push_back({{3, 2}, {-1, 0}, {0, -1}, "beta_1"});
+  const std::string tex = render_latex_picture(d);
+  EXPECT_NE(tex.find("\\begin{picture}"), std::string::npos);
+  EXPECT_NE(tex.find("\\pdfliteral{"), std::string::npos);
+  EXPECT_NE(tex.find("$K_{1}$"), std::string::npos);
+  EXPECT_NE(tex.find("$\\beta_{1}$"), std::string::npos);
+}
+
+TEST(ReportDrawing, LabelTexMapsGreekNamesAndSubscripts) {
+  EXPECT_EQ(label_tex("K'_1"), "K'_{1}");
+  EXPECT_EQ(label_tex("beta_2"), "\\beta_{2}");
+  EXPECT_EQ(label_tex("O_A"), "O_{A}");
+  EXPECT_EQ(label_tex("P"), "P");
+}
+
+}  // namespace
+}  // namespace linkproof::report

@@ -1,0 +1,119 @@
+// Reports as a reader sees them: the HTML rendered by headless Chromium (the DOM after KaTeX
+// ran, and a screenshot that is not blank), the LaTeX compiled by pdflatex. Each test skips only
+// when its tool is not installed (scripts/install_deps.sh installs both, so CI runs them).
+// Named ...Slow (label slow): a headless browser start costs seconds of wall time.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "support/cli_run.h"
+#include "support/temp_dir.h"
+
+namespace linkproof {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_cli;
+using test::slurp;
+using test::TempDir;
+
+std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+
+bool on_path(const std::string& tool) {
+  return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+// Runs a shell command; its standard output, and the exit status in `status`.
+std::string capture(const std::string& command, int& status) {
+  std::string out;
+  FILE* p = popen(command.c_str(), "r");
+  if (!p) {
+    status = -1;
+    return out;
+  }
+  char buf[65536];
+  size_t got;
+  while ((got = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, got);
+  status = pclose(p);
+  return out;
+}
+
+// Headless Chromium as root needs --no-sandbox; no network is used (the page is self-contained).
+std::string chromium(const std::string& args) {
+  return "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run "
+         "--virtual-time-budget=10000 " + args + " 2>/dev/null";
+}
+
+size_t count(const std::string& s, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(ReportReader, HtmlReportRendersInChromiumWithMathAndFiguresSlow) {
+  if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
+  TempDir dir("html");
+  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
+  const fs::path page = dir.path / "pentagon.html";
+  const std::string before = slurp(page);
+  ASSERT_NE(before.find("katex.render"), std::string::npos) << "KaTeX (libjs-katex) was not inlined";
+  int status = 0;
+  const std::string dom = capture(chromium("--dump-dom file://" + page.string()), status);
+  ASSERT_EQ(status, 0) << "chromium failed";
+  for (const char* id : {"summary", "derivation", "construction", "terms", "errata", "reproduce"})
+    EXPECT_NE(dom.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
+  // Every math element was rendered by KaTeX, and none failed.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(dom, m, std::regex("data-math-rendered=\"([0-9]+)\""))) << "the render script did not run";
+  const size_t rendered = std::stoul(m[1]);
+  EXPECT_EQ(rendered, count(before, "class=\"lp-math"));
+  EXPECT_GT(rendered, 50u);
+  EXPECT_GE(count(dom, "class=\"katex\""), rendered);
+  EXPECT_EQ(dom.find("class=\"katex-error\""), std::string::npos) << "a formula KaTeX could not render";
+  EXPECT_NE(dom.find("<svg"), std::string::npos);
+}
+
+TEST(ReportReader, HtmlReportScreenshotIsNotBlankSlow) {
+  if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
+  TempDir dir("shot");
+  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
+  // A blank page of the same size is the reference: PNG compresses a uniform image to almost
+  // nothing, so a page with text, formulas and a figure is many times larger.
+  std::ofstream(dir.path / "blank.html") << "<!DOCTYPE html><html><body></body></html>";
+  int status = 0;
+  for (const char* name : {"pentagon", "blank"}) {
+    capture(chromium("--window-size=1000,1400 --screenshot=" + (dir.path / (std::string(name) + ".png")).string() +
+                     " file://" + (dir.path / (std::string(name) + ".html")).string()),
+            status);
+    ASSERT_EQ(status, 0) << name;
+  }
+  const auto report = fs::file_size(dir.path / "pentagon.png"), blank = fs::file_size(dir.path / "blank.png");
+  EXPECT_GT(report, 10 * blank) << "report " << report << " bytes, blank page " << blank << " bytes";
+}
+
+TEST(ReportReader, LatexReportsCompileWithPdflatexSlow) {
+  if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed (scripts/install_deps.sh installs it)";
+  TempDir dir("tex");
+  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--format", "tex", "--out", dir.path.string()}).code, 0);
+  ASSERT_EQ(run_cli({"report", source("verify/scenes/mechanisms/seed001_fourbar.yaml"), "--plans", "--format", "tex",
+                     "--out", dir.path.string()})
+                .code,
+            0);
+  for (const char* stem : {"pentagon", "seed001_fourbar"}) {
+    int status = 0;
+    const std::string log = capture("cd " + dir.path.string() + " && pdflatex -interaction=nonstopmode -halt-on-error " +
+                                        stem + ".tex 2>&1",
+                                    status);
+    EXPECT_EQ(status, 0) << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
+    ASSERT_TRUE(fs::exists(dir.path / (std::string(stem) + ".pdf"))) << stem;
+    EXPECT_GT(fs::file_size(dir.path / (std::string(stem) + ".pdf")), 10000u);
+  }
+}
+
+}  // namespace
+}  // namespace linkproof
