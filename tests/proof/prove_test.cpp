@@ -29,7 +29,7 @@ TEST(Prove, Eq22IsProvedForEveryNExceptWhereNamedDegeneraciesVanish) {
   bool dead_centre = false, q_infinity = false;
   for (const auto& e : r.except) {
     dead_centre = dead_centre || e.meaning.find("dead centre") != std::string::npos;
-    q_infinity = q_infinity || e.meaning.find("Q_1 at infinity") != std::string::npos;
+    q_infinity = q_infinity || e.meaning.find("Q_j at infinity") != std::string::npos;
     EXPECT_EQ(e.meaning.find("unnamed"), std::string::npos) << e.polynomial;
   }
   EXPECT_TRUE(dead_centre);
