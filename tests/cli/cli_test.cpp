@@ -205,3 +205,23 @@ TEST(Cli, NoSubcommandIsBadInputAndHelpIsNot) {
 
 }  // namespace
 }  // namespace linkproof
+
+namespace linkproof {
+namespace {
+
+// The JSON example in docs/check.md is the program's own output for the pentagon, at least in
+// its summary (issue 11: the documented counts had drifted from the program's).
+TEST(Cli, DocumentedPentagonSummaryIsTheProgramsSummary) {
+  std::ifstream in(std::string(LINKPROOF_SOURCE_DIR) + "/docs/check.md");
+  const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const size_t at = doc.find("\"summary\": {");
+  ASSERT_NE(at, std::string::npos);
+  const size_t open = doc.find('{', at), close = doc.find('}', open);
+  const auto documented = nlohmann::json::parse(doc.substr(open, close - open + 1));
+  const CliRun r = test::run_cli({"check", std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/pentagon.yaml", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["summary"], documented);
+}
+
+}  // namespace
+}  // namespace linkproof
