@@ -149,7 +149,7 @@ const std::vector<Case>& corpus() {
        [] { return std::vector<std::string>{"check", "/nonexistent/scene.yaml", "--json"}; },
        2, "cannot read file", "\"exit_status\": 2", ""},
       // --- messages
-      {"UnknownSubcommandWithArguments", [] { return std::vector<std::string>{"report", "x.yaml"}; }, 2, "unknown subcommand 'report'", "", ""},
+      {"UnknownSubcommandWithArguments", [] { return std::vector<std::string>{"reprot", "x.yaml"}; }, 2, "unknown subcommand 'reprot'", "", ""},
       {"TabInIndentation",
        [] { return std::vector<std::string>{"check", write_temp("tab.yaml", "name: p\npolygon:\n\tjoints: " + kPentagonJoints + "\n  omega: [2, -1]\n  omega_dot: [1, 3]\n")}; },
        2, "tab character", "", ""},
