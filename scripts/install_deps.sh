@@ -13,6 +13,9 @@ PACKAGES=(
   # `linkproof report`: KaTeX inlined into HTML reports; the tests render them in headless
   # Chromium and compile the LaTeX with pdflatex (texlive-latex-base alone suffices).
   libjs-katex chromium texlive-latex-base
+  # The sanitizer and fuzzing stage of CI (scripts/run_sanitizer_tests.sh): clang with libFuzzer
+  # and the sanitizer runtimes, and Ninja.
+  clang libclang-rt-14-dev ninja-build
 )
 
 echo "==> install_deps: checking ${#PACKAGES[@]} Debian packages with dpkg-query"

@@ -1,22 +1,42 @@
 #!/usr/bin/env bash
-# Builds the unit tests under AddressSanitizer + UndefinedBehaviorSanitizer (Debug, in
-# build-asan/, -DLINKPROOF_SANITIZE=ON) and runs the fast label (`ctest -L unit`). Any sanitizer
-# report aborts the test that triggered it. Extra arguments go to the cmake configure step.
+# The second stage of CI (docs/fuzzing.md): one clang tree, build-fuzz/, with every linkproof
+# object instrumented for AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer coverage
+# (-DLINKPROOF_FUZZ=ON, -O1). In it:
+#   1. the unit tests under the sanitizers (`ctest -L unit`): any report aborts its test;
+#   2. the four fuzz targets, LINKPROOF_FUZZ_RUNS executions each from the seed corpus
+#      (`ctest -L fuzz`): a crash, a sanitizer report, a hang (> 10 s) or > 2 GB fails.
+# Extra arguments go to the cmake configure step (e.g. -DLINKPROOF_FUZZ_RUNS=100000).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/install_deps.sh
 
 jobs="$(nproc)"
-echo "==> sanitizer: cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DLINKPROOF_SANITIZE=ON $*"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DLINKPROOF_SANITIZE=ON -DLINKPROOF_BUILD_BENCH=OFF "$@"
-echo "==> sanitizer: cmake --build build-asan --target linkproof_tests -j${jobs}"
-cmake --build build-asan --target linkproof_tests -j"${jobs}"
+launcher=()
+if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+generator=()
+if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+configure=(cmake -S . -B build-fuzz "${generator[@]}" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug
+           "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -gline-tables-only" -DLINKPROOF_FUZZ=ON -DLINKPROOF_BUILD_BENCH=OFF
+           "${launcher[@]}" "$@")
+echo "==> sanitizer: ${configure[*]}"
+"${configure[@]}"
+targets=(linkproof_tests fuzz_polygon_scene fuzz_mechanism_scene fuzz_claim_file fuzz_cli_args)
+echo "==> sanitizer: cmake --build build-fuzz --target ${targets[*]} -j${jobs}"
+build_start=$SECONDS
+cmake --build build-fuzz --target "${targets[@]}" -j"${jobs}"
+echo "==> sanitizer: build took $((SECONDS - build_start)) s"
+
 # Leaks are not checked: GiNaC and CLN keep global tables alive until exit by design.
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-echo "==> sanitizer: ctest --test-dir build-asan -L unit -j${jobs}"
 rc=0
-ctest --test-dir build-asan -L unit --output-on-failure -j"${jobs}" || rc=$?
-echo "==> sanitizer: ctest exited with ${rc}"
+echo "==> sanitizer: ctest --test-dir build-fuzz -L unit -j${jobs}"
+ctest --test-dir build-fuzz -L unit --output-on-failure -j"${jobs}" || rc=$?
+echo "==> sanitizer: unit tests exited with ${rc}"
+fuzz_rc=0
+echo "==> sanitizer: ctest --test-dir build-fuzz -L fuzz -j${jobs}"
+ctest --test-dir build-fuzz -L fuzz --output-on-failure -j"${jobs}" || fuzz_rc=$?
+echo "==> sanitizer: fuzz runs exited with ${fuzz_rc}"
+if [[ ${rc} -eq 0 ]]; then rc=${fuzz_rc}; fi
 exit "${rc}"

@@ -10,6 +10,7 @@
 
 #include "linkproof/batch/case_sink.h"
 #include "linkproof/batch/interrupt.h"
+#include "linkproof/core/time_budget.h"
 #include "linkproof/batch/progress_bar.h"
 #include "linkproof/batch/worker_pool.h"
 #include "linkproof/io/sweep_scene.h"
@@ -20,6 +21,7 @@ int BatchSweepResult::exit_status() const {
   switch (status) {
     case Status::Complete: return report.exit_status();
     case Status::Interrupted: return 128 + signal;
+    case Status::OutOfTime: return 2;
     case Status::WorkerFailed: return 3;
   }
   return 3;
@@ -96,7 +98,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
   if (o.jobs <= 1 || rest.size() <= 1) {
     std::optional<GroundTruthEngine> engine;
     for (long k : rest) {
-      if (interrupt_signal() != 0) break;
+      if (interrupt_signal() != 0 || TimeBudget::expired()) break;
       if (!engine) engine.emplace();
       SweepCase c = run_sweep_case(*engine, catalogue, o.sweep, k);
       take(c);
@@ -109,6 +111,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
       return sweep_case_line(c, o.sweep.arithmetic);
     });
     for (size_t i = 0; i < rest.size(); ++i) {
+      if (TimeBudget::expired()) break;
       WorkerPool::Next next = pool.next();
       if (!next.line) {
         if (next.signal == 0) {
@@ -129,6 +132,12 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
     result.status = BatchSweepResult::Status::Interrupted;
     result.signal = interrupt_signal();
     result.message = fmt::format("interrupted by signal {} after {} of {} cases", result.signal, done, cases.size());
+  }
+  if (result.status == BatchSweepResult::Status::Complete && TimeBudget::expired() &&
+      done < static_cast<long>(cases.size())) {
+    result.status = BatchSweepResult::Status::OutOfTime;
+    result.message = fmt::format("stopped by the time budget of {} s (--max-seconds) after {} of {} cases",
+                                 TimeBudget::limit_seconds(), done, cases.size());
   }
   if (result.status != BatchSweepResult::Status::Complete)
     result.message += o.out.empty() ? "; nothing was saved (--out FILE keeps every completed case)"

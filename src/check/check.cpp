@@ -2,6 +2,7 @@
 
 #include <cln/float.h>
 
+#include <new>
 #include <optional>
 
 #include "linkproof/check/inconclusive_cause.h"
@@ -73,6 +74,8 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
     out.verdict = Verdict::Inconclusive;
     out.headline.verdict = Verdict::Inconclusive;
     out.headline.reason = std::string("CLN ") + e.what() + " (exponent range exceeded in this precision)";
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception& e) {
     out.verdict = Verdict::Error;
     out.error = e.what();

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <new>
 #include <type_traits>
 
 namespace linkproof {
@@ -106,6 +107,8 @@ InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonConte
   const PolygonContext<T> fresh = context.fresh();
   try {
     (void)claim.function<T>()(fresh);
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception&) {
     // What was computed before the exception is still recorded; that is all we need.
   }

@@ -1,7 +1,6 @@
 // linkproof check-data SCENE DATA.csv [--json]
 // Recorded motion against the exact truth at the recorded positions (numerics/data_check.h).
 #include "command.h"
-#include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/motion_data.h"
 #include "linkproof/numerics/data_check.h"
@@ -17,10 +16,7 @@ struct CheckDataArgs {
 };
 
 int run_check_data(const CheckDataArgs& a, std::ostream& out, std::ostream&) {
-  const std::string text = read_scene_text(a.scene);
-  if (!is_mechanism_scene_text(text))
-    throw InputError(a.scene, "mechanism", "check-data needs a mechanism scene (a top-level `mechanism:` key)");
-  const MechanismScene scene = parse_mechanism_scene(text, a.scene);
+  const MechanismScene scene = load_mechanism_scene(a.scene);
   const MotionData data = load_motion_data(a.data, scene);
   const DataCheck check = check_motion_data(scene, data);
   return print_report(out, check, a.json, exit_status(check));

@@ -4,10 +4,13 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
+#include <new>
 
+#include "budget_watchdog.h"
 #include "command.h"
 #include "error_report.h"
 #include "linkproof/core/error.h"
+#include "linkproof/core/time_budget.h"
 
 namespace linkproof::cli {
 
@@ -34,12 +37,24 @@ int checked_output(std::ostream& out, std::ostream& err, int status) {
   return kBadInput;
 }
 
-// Parses `args` into `action`; returns the exit code when the command line ends here.
+// Parses `args` into `action` and `resources`; returns the exit code when the command line ends
+// here.
 std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, Action& action,
-                         bool json) {
+                         Resources& resources, bool json) {
   CLI::App app{"linkproof: checks published kinematics formulas of planar linkages against the exact truth"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "linkproof 0.1.0");
+  // The resource options belong to every subcommand: declared once here, and found after the
+  // subcommand's name too (fallthrough, inherited by the subcommands declared below).
+  app.fallthrough();
+  std::optional<double> max_seconds;
+  app.add_option("--max-seconds", max_seconds,
+                 "wall-clock budget of the run in seconds (default 3600; sweep: none; 0: none); past it the run "
+                 "stops with exit 2 (docs/limits.md)")
+      ->check(budget_validator());
+  app.add_option("--max-memory-mb", resources.max_memory_mb,
+                 "address-space budget in MiB (default 8192; 0: none); past it the run stops with exit 2")
+      ->check(int_range_validator(0, 1 << 24));
 
   // One line per subcommand; each lives in its own <name>_command.cpp.
   add_check_command(app, action);
@@ -75,6 +90,8 @@ std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out
     return status;
   }
   if (!action) return print_error(out, err, internal_error_report("no subcommand action was set"), json);
+  const bool is_sweep = !app.get_subcommands().empty() && app.get_subcommands().front()->get_name() == "sweep";
+  resources.max_seconds = max_seconds.value_or(is_sweep ? 0.0 : kDefaultMaxSeconds);
   return std::nullopt;
 }
 
@@ -86,17 +103,27 @@ bool wants_json(const std::vector<std::string>& args) {
 
 std::optional<int> parse_only(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   Action action;
-  return parse(args, out, err, action, wants_json(args));
+  Resources resources;
+  return parse(args, out, err, action, resources, wants_json(args));
 }
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, RunMode mode) {
   const bool json = wants_json(args);
   Action action;
-  if (const auto finished = parse(args, out, err, action, json)) return *finished;
+  Resources resources;
+  if (const auto finished = parse(args, out, err, action, resources, json)) return *finished;
+  // The budget is cooperative in-process (TimeBudget::check at each unit of work); the program
+  // adds a watchdog for units that never reach a check point, and the memory limit.
+  BudgetScope budget(resources, mode == RunMode::Program, json);
   try {
     return checked_output(out, err, action(out, err));
   } catch (const InputError& e) {
     return print_error(out, err, input_error_report(e), json);
+  } catch (const BudgetExceeded& e) {
+    return print_error(out, err, command_line_error_report("--max-seconds", e.what()), json);
+  } catch (const std::bad_alloc&) {
+    lift_memory_limit();
+    return print_error(out, err, memory_error_report(resources), json);
   } catch (const std::exception& e) {
     return print_error(out, err, internal_error_report(e.what()), json);
   }

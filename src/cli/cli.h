@@ -17,8 +17,16 @@ namespace linkproof::cli {
 
 enum ExitCode { kAsExpected = 0, kClaimFailed = 1, kBadInput = 2, kInternalError = 3 };
 
+/// How run() enforces the resource budgets (--max-seconds, --max-memory-mb; docs/limits.md).
+///   InProcess  the time budget is cooperative (TimeBudget::check); no memory limit and no
+///              watchdog, so a test or a library caller is never killed;
+///   Program    the linkproof executable: also a watchdog thread that ends the process (exit 2,
+///              the error printed) shortly after the deadline, and RLIMIT_AS for the memory.
+enum class RunMode { InProcess, Program };
+
 /// args excludes the program name.
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+        RunMode mode = RunMode::InProcess);
 
 /// The command line parsed and validated without running the work (what the CLI fuzz target
 /// exercises): the exit code run() would return for a bad or finished command line (help,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "command.h"
+#include "linkproof/core/time_budget.h"
 #include "dijksman1966_counting.h"
 #include "linkproof/core/error.h"
 #include "linkproof/report/count_report.h"
@@ -36,8 +37,10 @@ int run_count(const CountArgs& a, std::ostream& out, std::ostream&) {
   } else {
     const auto [lo, hi] = parse_n_range(a.n_range, "--n", 3, 200);
     r.subject = lo == hi ? fmt::format("n = {}", lo) : fmt::format("n = {}..{}", lo, hi);
-    for (int n = lo; n <= hi; ++n)
+    for (int n = lo; n <= hi; ++n) {
+      TimeBudget::check("the count at n = " + std::to_string(n));
       for (auto& c : dijksman1966::count_claims_for_n(n, a.seed)) r.claims.push_back(std::move(c));
+    }
   }
   return print_report(out, r, a.json, r.exit_status());
 }

@@ -16,10 +16,7 @@ struct CurvatureArgs {
 };
 
 int run_curvature(const CurvatureArgs& a, std::ostream& out, std::ostream&) {
-  const std::string text = read_scene_text(a.scene);
-  if (!is_mechanism_scene_text(text))
-    throw InputError(a.scene, "mechanism", "expected a mechanism scene (a map with a top-level `mechanism` key)");
-  const MechanismScene scene = parse_mechanism_scene(text, a.scene);
+  const MechanismScene scene = load_mechanism_scene(a.scene);
   const CurvatureCheck check = check_curvature(scene, catalogues::second_order_catalogues(scene));
   return print_report(out, check, a.json, exit_status(check));
 }

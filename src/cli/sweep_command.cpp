@@ -72,6 +72,7 @@ int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream
   // The bar only on the real stderr, and only when it is a terminal.
   if (&err == &std::cerr && ::isatty(STDERR_FILENO)) b.progress = &err;
   const BatchSweepResult r = run_batch_sweep(dijksman1966::catalogue(), b);
+  if (r.status == BatchSweepResult::Status::OutOfTime) throw InputError("<command line>", "--max-seconds", r.message);
   if (r.status != BatchSweepResult::Status::Complete) {
     fmt::print(err, "linkproof sweep: {}\n", r.message);
     return r.exit_status();

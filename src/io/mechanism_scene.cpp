@@ -46,6 +46,9 @@ class MechanismReader {
 
   MechanismScene read(const YAML::Node& doc) {
     if (!doc.IsMap()) fail("", "expected a map with the fields `name` and `mechanism`, got " + kind_of(doc));
+    if (!doc["mechanism"] && doc["polygon"])
+      fail("mechanism", "expected a mechanism scene (a top-level `mechanism:` key), got a polygon scene (checked by "
+                        "`linkproof check`)");
     check_keys(doc, "", {"name", "description", "mechanism", "curvature", "joint_joining"});
     MechanismScene scene;
     scene.source = source_;

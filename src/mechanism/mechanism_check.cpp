@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <type_traits>
 
 #include "linkproof/mechanism/mechanism_vector_route.h"
@@ -118,6 +119,8 @@ ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismCon
         if (o.verdict == v && out.headline.label.empty()) out.headline = o;
   } catch (const UndefinedQuantity& u) {
     out.mark_undefined(u);
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception& e) {
     out.verdict = Verdict::Error;
     out.error = e.what();

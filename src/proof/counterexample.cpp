@@ -5,6 +5,7 @@
 #include <cln/integer.h>
 
 #include "linkproof/check/random_polygon.h"
+#include "linkproof/core/time_budget.h"
 #include "linkproof/io/scene.h"
 
 namespace linkproof {
@@ -101,6 +102,7 @@ std::optional<Counterexample> find_counterexample(GroundTruthEngine& engine, con
   for (int n = lo; n <= hi && !found; ++n) {
     SplitMix64 rng(o.seed * 1000003u + static_cast<std::uint64_t>(n));
     for (int a = 0; a < o.attempts_per_n && !found; ++a) {
+      TimeBudget::check("the counterexample search of " + claim.info.id + " at n = " + std::to_string(n));
       const long range = 2 + a / 10;  // small integers first
       std::vector<Vec2<Rational>> joints;
       for (int k = 0; k < n; ++k) joints.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});

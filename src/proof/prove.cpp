@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <new>
 #include <set>
 
 #include "exceptional_set.h"
 #include "linkproof/core/symbolic_scalar.h"
+#include "linkproof/core/time_budget.h"
 #include "linkproof/proof/lift.h"
 #include "linkproof/symbolic/tape.h"
 #include "symbolic_polygon.h"
@@ -32,6 +34,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
   ZeroTestLog log;
   const PolygonContext<ex> ctx = build_polygon_context_from<ex>(engine, sp.polygon, zero_rates, false);
   std::vector<ex> compared, sides, claim_divisors;
+  const std::string phase = "the per-n proof of " + claim.info.id + " at n = " + std::to_string(n);
   const auto compare_at = [&](int j) {
     IndexBindings b;
     b.j = j;
@@ -47,6 +50,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     for (const auto& t : lhs.terms()) monomials.insert(t.first);
     for (const auto& t : rhs.terms()) monomials.insert(t.first);
     for (const Monomial& m : monomials) {
+      TimeBudget::check(phase);
       const ex l = lhs.coefficient(m), rr = rhs.coefficient(m);
       const ex d = l - rr;
       compared.push_back(d);
@@ -260,6 +264,8 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
       r.verdict = ProofVerdict::Error;
       r.error = "no symbolic proof and no counterexample: " + std::string(u.what());
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception& e) {
     r.verdict = ProofVerdict::Error;
     r.error = e.what();

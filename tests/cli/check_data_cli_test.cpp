@@ -42,6 +42,18 @@ TEST(CheckDataCli, BadCsvIsExitCode2NamingLineAndColumn) {
   EXPECT_NE(missing.err.find("/nonexistent.csv"), std::string::npos) << missing.err;
   const auto polygon = run_cli({"check-data", path("verify/scenes/pentagon.yaml"), path("verify/data/pmks_watt_i_matlab.csv")});
   EXPECT_EQ(polygon.code, 2) << polygon.err;
+  EXPECT_NE(polygon.err.find("got a polygon scene"), std::string::npos) << polygon.err;
+}
+
+// Every command that needs a mechanism refuses a polygon scene with the same message.
+TEST(CheckDataCli, PolygonSceneIsRefusedAlikeByEveryMechanismCommand) {
+  for (const std::string command : {"check-data", "curvature"}) {
+    std::vector<std::string> args = {command, path("verify/scenes/pentagon.yaml")};
+    if (command == "check-data") args.push_back(path("verify/data/pmks_watt_i_matlab.csv"));
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.code, 2) << command;
+    EXPECT_NE(r.err.find("pentagon.yaml: mechanism: expected a mechanism scene"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

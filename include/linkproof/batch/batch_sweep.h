@@ -30,16 +30,17 @@ struct BatchSweepOptions {
 };
 
 struct BatchSweepResult {
-  enum class Status { Complete, Interrupted, WorkerFailed };
+  enum class Status { Complete, Interrupted, OutOfTime, WorkerFailed };
   Status status = Status::Complete;
   SweepReport report;      ///< of every case done, read back or computed
   int signal = 0;          ///< Interrupted: the signal
-  std::string message;     ///< Interrupted / WorkerFailed: what happened and how to continue
+  std::string message;     ///< not Complete: what happened and how to continue
   long cases_resumed = 0;  ///< cases read back from the result file
   long cases_run = 0;      ///< cases computed by this run
   bool already_complete = false;  ///< the result file already held the summary line
 
-  /// The CLI's exit code: the report's when complete; 128 + signal when interrupted; 3 when a
+  /// The CLI's exit code: the report's when complete; 128 + signal when interrupted; 2 when
+  /// stopped by the time budget (--max-seconds); 3 when a
   /// worker failed.
   int exit_status() const;
 };

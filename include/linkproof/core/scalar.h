@@ -40,14 +40,6 @@ struct ScalarTraits<Rational> {
   static std::string to_string(const Rational& x) { return format_rational(x); }
 };
 
-/// Shared by float and Tracked traits: IEEE types rounded from exact rationals.
-template <class F>
-F round_rational(const Rational& q);
-template <>
-double round_rational<double>(const Rational& q);
-template <>
-long double round_rational<long double>(const Rational& q);
-
 /// The exact rational value of a finite IEEE number (every binary float is a dyadic rational).
 template <class F>
 Rational exact_value_of(F x);
@@ -88,12 +80,6 @@ struct ScalarTraits<Tracked<F>> {
   static double to_double(const Tracked<F>& x) { return ScalarTraits<F>::to_double(x.v); }
   static std::string to_string(const Tracked<F>& x) { return ScalarTraits<F>::to_string(x.v); }
 };
-
-template <std::floating_point F>
-F TrackedTraits<F>::radius_up(const Rational& q) {
-  if (cln::zerop(q)) return 0;
-  return std::nextafter(round_rational<F>(cln::abs(q)), std::numeric_limits<F>::infinity());
-}
 
 template <class F>
 Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {

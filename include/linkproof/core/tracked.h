@@ -57,6 +57,14 @@ namespace linkproof {
 template <class F>
 struct TrackedTraits;
 
+/// Shared by the float and Tracked traits (core/scalar.h): IEEE types rounded from exact rationals.
+template <class F>
+F round_rational(const Rational& q);
+template <>
+double round_rational<double>(const Rational& q);
+template <>
+long double round_rational<long double>(const Rational& q);
+
 /// IEEE double and long double: the radius is an F, every radius operation is rounded to
 /// nearest by the hardware and then moved one float up (next_up), the margin one float down.
 template <std::floating_point F>
@@ -81,7 +89,12 @@ struct TrackedTraits<F> {
   static constexpr F unbounded() { return std::numeric_limits<F>::infinity(); }
   static bool is_unbounded(F r) { return !std::isfinite(r); }
   /// The least radius >= |q| (0 only for q = 0): q correctly rounded to F, one step up.
-  static F radius_up(const Rational& q);
+  /// Defined in the class: clang 14 rejects an out-of-line member of this constrained partial
+  /// specialization (the fuzz build, docs/fuzzing.md).
+  static F radius_up(const Rational& q) {
+    if (cln::zerop(q)) return 0;
+    return std::nextafter(round_rational<F>(cln::abs(q)), std::numeric_limits<F>::infinity());
+  }
 };
 
 template <class F>

@@ -47,6 +47,8 @@ namespace linkproof {
 /// including unreadable files: the polygon reader then reports the problem).
 bool is_mechanism_scene_text(const std::string& yaml_text);
 
+/// The scene at `path` (or in `yaml_text`); a polygon scene is refused naming the field
+/// `mechanism`, so that a command that needs a mechanism says so.
 MechanismScene load_mechanism_scene(const std::string& path);
 MechanismScene parse_mechanism_scene(const std::string& yaml_text, const std::string& source);
 
