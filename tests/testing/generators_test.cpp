@@ -314,5 +314,80 @@ TEST(TestingGenerators, QFarAndBetaSmallBendTheLoopAndTheJTheLabelNames) {
   EXPECT_LE(10 * q_near, q_cases) << q_near << " of " << q_cases << " QFar cases have |Q_j - K_n| < 10^(k-2) size";
 }
 
+TEST(TestingGenerators, BiasesThatAFamilyCannotHaveSaySoInTheLabel) {
+  // Sliders have no Dijksman polygon (a prismatic pair); a change-point four-bar's s + l = p + q
+  // does not survive moving a joint. The case is ordinary and the label says which bias was refused.
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    for (const Bias bias : {Bias::QFar, Bias::BetaSmall}) {
+      const MechanismCase c = draw(gen_slider_mechanism(bias), seed);
+      EXPECT_TRUE(is_well_posed(c.scene));
+      EXPECT_NE(c.family.find(bias == Bias::QFar ? "/q-far-does-not-apply" : "/beta-small-does-not-apply"),
+                std::string::npos)
+          << c.family;
+      EXPECT_EQ(coverage_label(c.family), c.family) << "no exponent to strip";
+    }
+    const MechanismCase cp = draw(gen_fourbar(GrashofClass::ChangePoint, Bias::NearDeadCentre), seed);
+    EXPECT_EQ(cp.family, "fourbar/change-point/near-toggle-does-not-apply");
+  }
+}
+
+TEST(TestingGenerators, CoverageLabelsNameFamilyBiasLoopAndJWithoutTheExponent) {
+  EXPECT_EQ(coverage_label("sixbar/stephenson-iii/q-far-j2-loop-A.B.E.F.G-1e-6"),
+            "sixbar/stephenson-iii/q-far-j2-loop-A.B.E.F.G");
+  EXPECT_EQ(coverage_label("eightbar/fig5/near-toggle-J57-1e-11"), "eightbar/fig5/near-toggle-J57");
+  for (const BiasedFamily& f : loop_families())
+    for (const Bias bias : {Bias::NearDeadCentre, Bias::QFar, Bias::BetaSmall}) {
+      const std::string label = coverage_label(draw(f.gen(bias), 3).family);
+      EXPECT_EQ(label.rfind(f.name, 0), 0u) << label;
+      EXPECT_EQ(label.find("1e"), std::string::npos) << label;
+    }
+}
+
+TEST(TestingGenerators, APlantedFailureOnABiasedFamilyShrinksToExponent2AndSmallCoordinates) {
+  // A property that fails on every case of a biased family shrinks (greedily, as RapidCheck
+  // does) to the mildest bias, j = 1, zero rates and coordinates of magnitude <= 2 except for the
+  // joint the bias places (which stays within a few units).
+  struct Run {
+    std::string name;
+    rc::Gen<MechanismCase> gen;
+  };
+  std::vector<Run> runs;
+  for (const BiasedFamily& f : loop_families())
+    for (const Bias bias : {Bias::NearDeadCentre, Bias::QFar, Bias::BetaSmall}) runs.push_back({f.name, f.gen(bias)});
+  runs.push_back({"slider/", gen_slider_mechanism(Bias::NearDeadCentre)});
+  for (const Run& r : runs) {
+    for (int seed = 1; seed <= 3; ++seed) {
+      const MechanismCase c = shrink_greedily<MechanismCase>(r.gen, seed, [](const MechanismCase&) { return true; });
+      SCOPED_TRACE(c.family + " seed " + std::to_string(seed));
+      EXPECT_EQ(c.family.rfind(r.name, 0), 0u);
+      EXPECT_EQ(exponent_of(c.family), 2);
+      if (c.family.find("-j") != std::string::npos) EXPECT_EQ(j_of(c.family), 1);
+      EXPECT_TRUE(cln::zerop(c.scene.inputs[0].rate)) << c;
+      EXPECT_TRUE(cln::zerop(c.scene.inputs[0].rate_dot)) << c;
+      int large = 0;
+      for (const auto& j : c.scene.linkage.joints()) {
+        if (cln::abs(j.at.x) > 2 || cln::abs(j.at.y) > 2) ++large;
+        EXPECT_LE(cln::abs(j.at.x), 8) << c;
+        EXPECT_LE(cln::abs(j.at.y), 8) << c;
+      }
+      EXPECT_LE(large, 1) << c;
+    }
+  }
+}
+
+RC_GTEST_PROP(TestingGenerators, DoubleTruthBoundsTheExactOnBiasedMultiLoopAndSliderCases, ()) {
+  // compute_truth on the biased cases: every link's omega and alpha exact, and the double value's
+  // rigorous bound contains the exact value (decided in rationals).
+  const Bias bias = *rc::gen::element(Bias::NearDeadCentre, Bias::QFar, Bias::BetaSmall, Bias::ExtremeRatio);
+  for (const auto& gen : {gen_watt_sixbar(bias), gen_stephenson_sixbar(bias), gen_fig5_eightbar(bias),
+                          gen_slider_mechanism(bias)}) {
+    const MechanismCase c = *gen;
+    classify_case(c);
+    const MechanismTruth t = compute_truth(c.scene);
+    RC_ASSERT(t.links.size() == static_cast<size_t>(c.scene.linkage.link_count()));
+    expect_double_bounds_exact(t);
+  }
+}
+
 }  // namespace
 }  // namespace linkproof::testing
