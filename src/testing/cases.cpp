@@ -202,6 +202,33 @@ bool is_well_posed(const MechanismScene& scene) {
   }
 }
 
+Rational compute_velocity_determinant(const MechanismScene& scene) {
+  const Linkage& g = scene.linkage;
+  if (g.link_count() < 2) throw InputError(scene.source, "mechanism", "no linkage: no velocity system");
+  DenseMatrix<Rational> a = rigid_body_constraint_matrix<Rational>(g);
+  std::vector<Rational> unused;
+  append_input_rows(g, scene.inputs, a, unused, false, scene.source);
+  const size_t n = static_cast<size_t>(g.unknown_count());
+  if (a.size() != n)
+    throw InputError(scene.source, "mechanism.inputs",
+                     fmt::format("the velocity system has {} rows for {} unknowns: no determinant", a.size(), n));
+  // Gaussian elimination with the first non-zero pivot (exact: any non-zero pivot will do).
+  Rational det = 1;
+  for (size_t c = 0; c < n; ++c) {
+    size_t p = c;
+    while (p < n && cln::zerop(a[p][c])) ++p;
+    if (p == n) return 0;
+    if (p != c) std::swap(a[p], a[c]), det = -det;
+    det *= a[c][c];
+    for (size_t r = c + 1; r < n; ++r) {
+      if (cln::zerop(a[r][c])) continue;
+      const Rational f = a[r][c] / a[c][c];
+      for (size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
+    }
+  }
+  return det;
+}
+
 std::ostream& operator<<(std::ostream& os, GrashofClass c) { return os << to_string(c); }
 
 std::ostream& operator<<(std::ostream& os, const MechanismCase& c) {

@@ -1,9 +1,12 @@
 #include "linkproof/testing/generators.h"
 
+#include <cln/integer.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <algorithm>
+
+#include "linkproof/core/error.h"
 
 namespace linkproof::testing {
 
@@ -48,6 +51,52 @@ Point extreme_ratio(const Point& fixed, const Point& moved, int k, bool shorter)
 }
 
 std::string ratio_suffix(int k, bool shorter) { return fmt::format("/ratio-1e{}{}", shorter ? "-" : "", k); }
+
+std::string_view bias_name(Bias b) {
+  switch (b) {
+    case Bias::NearDeadCentre: return "near-toggle";
+    case Bias::QFar: return "q-far";
+    case Bias::BetaSmall: return "beta-small";
+    case Bias::ExtremeRatio: return "ratio";
+    default: return "none";
+  }
+}
+
+/// The label of a bias that the family cannot have (the header says why): the case is ordinary.
+std::string does_not_apply(Bias b) { return fmt::format("/{}-does-not-apply", bias_name(b)); }
+
+/// One loop of a mechanism read as Dijksman's polygon (SPEC A1): K_1..K_n point into the case's
+/// joints, side n is fixed, sides 1..n-3 are the known ones.
+struct LoopRef {
+  std::vector<Point*> k;
+  std::vector<std::string> names;
+};
+
+/// NearDeadCentre, QFar or BetaSmall on one loop, as bias_polygon does on a polygon: K_{n-1}
+/// moves ~10^-k off a line through K_{n-2}, so that r_{n-2} is nearly parallel to
+///   r_{n-1}          (NearDeadCentre: D = r_{n-2} x r_{n-1} ~ 0, the loop's toggle),
+///   r_j + r_{n-1}    (QFar: Q_j far away),
+///   r_j              (BetaSmall: beta_j small).
+/// Returns the suffix, naming the loop by its joints and j ("/q-far-j2-loop-A.B.E.F.G-1e-6").
+std::string bias_loop(const LoopRef& l, Bias bias) {
+  const size_t n = l.k.size();
+  const Point k_nm2 = *l.k[n - 3], k_n = *l.k[n - 1];
+  const std::string loop = fmt::format("loop-{}", fmt::join(l.names, "."));
+  const int k = draw_exponent(12);
+  const Rational eps = Rational(1) / pow10(k);
+  if (bias == Bias::NearDeadCentre) {
+    *l.k[n - 2] = near_line(k_nm2, k_n - k_nm2, eps);
+    return fmt::format("/near-toggle-{}-1e-{}", loop, k);
+  }
+  const int j = *rc::gen::inRange(1, static_cast<int>(n) - 2);  // 1..n-3, shrinking toward 1
+  const Point r_j = *l.k[static_cast<size_t>(j)] - *l.k[static_cast<size_t>(j - 1)];
+  if (bias == Bias::QFar) {  // r_{n-2} x (r_j + r_{n-1}) = r_{n-2} x (r_j + K_n - K_{n-2}) ~ 0
+    *l.k[n - 2] = near_line(k_nm2, r_j + k_n - k_nm2, eps);
+    return fmt::format("/q-far-j{}-{}-1e-{}", j, loop, k);
+  }
+  *l.k[n - 2] = near_line(k_nm2, r_j, eps);
+  return fmt::format("/beta-small-j{}-{}-1e-{}", j, loop, k);
+}
 
 std::vector<Point> polygon_points(const PolygonOptions& o, int n, PolygonShape shape, int den) {
   std::vector<Point> pts;
@@ -128,11 +177,15 @@ MechanismCase draw_fourbar(std::optional<GrashofClass> cls, Bias bias, int bound
   if (cls == GrashofClass::DoubleRocker) b = a + draw_offset(2, den);
   if (cls == GrashofClass::ChangePoint) b = a + (o4 - o2);  // a parallelogram: s + l = p + q
   std::string suffix;
-  if (cls != GrashofClass::ChangePoint) {
+  if (cls == GrashofClass::ChangePoint) {
+    if (bias != Bias::None) suffix = does_not_apply(bias);  // s + l = p + q does not survive a move
+  } else {
     if (bias == Bias::NearDeadCentre) {
       const int k = draw_exponent(12);
       b = near_line(a, o4 - a, Rational(1) / pow10(k));
       suffix = fmt::format("/near-toggle-1e-{}", k);
+    } else if (bias == Bias::QFar || bias == Bias::BetaSmall) {
+      suffix = bias_loop({{&o2, &a, &b, &o4}, {"O2", "A", "B", "O4"}}, bias);
     } else if (bias == Bias::ExtremeRatio) {
       const int k = draw_exponent(8);
       const bool shorter = *rc::gen::arbitrary<bool>();
@@ -143,8 +196,10 @@ MechanismCase draw_fourbar(std::optional<GrashofClass> cls, Bias bias, int bound
   return with_suffix(make_fourbar(o2, a, b, o4, *gen_rate(), *gen_rate()), suffix);
 }
 
-template <size_t N, class Make>
-MechanismCase draw_multi(Bias bias, int bound, Make make) {
+/// `biased_loop(p)`: the loop that NearDeadCentre, QFar and BetaSmall bend (bias_loop);
+/// `toggle(p)`, if given, places NearDeadCentre instead.
+template <size_t N, class Make, class Loop, class Toggle>
+MechanismCase draw_multi(Bias bias, int bound, Make make, Loop biased_loop, Toggle toggle) {
   const int den = *rc::gen::inRange(1, 4);
   std::array<Point, N> p;
   for (auto& x : p) x = draw_point(bound, den);
@@ -154,8 +209,89 @@ MechanismCase draw_multi(Bias bias, int bound, Make make) {
     const bool shorter = *rc::gen::arbitrary<bool>();
     p[1] = extreme_ratio(p[0], p[1], k, shorter);
     suffix = ratio_suffix(k, shorter);
+  } else if (bias == Bias::NearDeadCentre && toggle) {
+    suffix = (*toggle)(p);
+  } else if (bias == Bias::NearDeadCentre || bias == Bias::QFar || bias == Bias::BetaSmall) {
+    suffix = bias_loop(biased_loop(p), bias);
   }
-  return with_suffix(make(p, *gen_rate(), *gen_rate()), suffix);
+  const Rational omega = *gen_rate(), omega_dot = *gen_rate();
+  return with_suffix(make(p, omega, omega_dot), suffix);
+}
+
+/// Watt I: the driven loop C, D, E, F (links BCD, DE, EF, CFG; side CFG fixed, BCD the known
+/// side): the dyad DE, EF driven by BCD relative to CFG.
+LoopRef watt_loop(std::array<Point, 7>& p) { return {{&p[2], &p[3], &p[4], &p[5]}, {"C", "D", "E", "F"}}; }
+/// Stephenson III: the pentagon A, B, E, F, G (links AB, BCE, EF, FG, ground; AB and BCE known).
+LoopRef stephenson_loop(std::array<Point, 7>& p) {
+  return {{&p[0], &p[1], &p[4], &p[5], &p[6]}, {"A", "B", "E", "F", "G"}};
+}
+/// Fig. 5: the pentagon 1-2-3-4-0, K = J01, J12, J23, J34, J40 (sides links 1, 2, 3, 4, 0).
+LoopRef fig5_loop(std::array<Point, 10>& p) {
+  return {{&p[4], &p[0], &p[1], &p[2], &p[3]}, {"J01", "J12", "J23", "J34", "J40"}};
+}
+
+/// A real root of the quadratic det(t) = a t^2 + b t + c nearest 0 with |t| <= 8, to within
+/// about 10^-digits (exact if the root is rational); nullopt if none.
+std::optional<Rational> quadratic_root(const Rational& a, const Rational& b, const Rational& c, int digits) {
+  std::vector<Rational> roots;
+  if (cln::zerop(a)) {
+    if (cln::zerop(b)) return std::nullopt;
+    roots.push_back(-c / b);
+  } else {
+    const Rational disc = b * b - Rational(4) * a * c;
+    if (cln::minusp(disc)) return std::nullopt;
+    // sqrt(P/Q) = sqrt(P Q) / Q, its integer part at scale S = 10^digits.
+    const cln::cl_I P = cln::numerator(disc), Q = cln::denominator(disc), S = cln::expt_pos(cln::cl_I(10), static_cast<unsigned long>(digits));
+    cln::cl_I root;
+    cln::isqrt(P * Q * S * S, &root);
+    const Rational s = Rational(root) / Rational(Q * S);
+    roots.push_back((-b + s) / (Rational(2) * a));
+    roots.push_back((-b - s) / (Rational(2) * a));
+  }
+  std::optional<Rational> best;
+  for (const Rational& r : roots)
+    if (cln::abs(r) <= 8 && (!best || cln::abs(r) < cln::abs(*best))) best = r;
+  return best;
+}
+
+/// NearDeadCentre for the Fig. 5 eight-bar, whose loops are coupled (no loop's D is the
+/// mechanism's dead point): joint m moves along u to t ~10^-k past a root of the velocity
+/// determinant det(p_m + t u), which is quadratic in t (p_m enters the columns of its two links).
+/// Up to six (joint, direction) draws; kToggleNotFound if none has a usable root.
+constexpr std::string_view kToggleNotFound = "/near-toggle-not-found";
+
+std::string fig5_toggle(std::array<Point, 10>& p) {
+  static const char* names[10] = {"J12", "J23", "J34", "J40", "J01", "J15", "J57", "J74", "J56", "J63"};
+  const int k = draw_exponent(12);
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    const size_t m = static_cast<size_t>(*rc::gen::inRange(0, 10));
+    const Point u = draw_offset(2, 1);
+    std::optional<Rational> failed;
+    const auto det = [&](const Rational& t) -> Rational {
+      auto q = p;
+      q[m] = p[m] + t * u;
+      try {
+        return compute_velocity_determinant(make_fig5_eightbar(q, 1, 0).scene);
+      } catch (const InputError&) {
+        failed = t;
+        return 0;
+      }
+    };
+    const Rational f0 = det(0), f1 = det(1), fm1 = det(-1);
+    const Rational a = (f1 + fm1) / Rational(2) - f0, b = (f1 - fm1) / Rational(2), c = f0;
+    if (failed || det(2) != Rational(4) * a + Rational(2) * b + c || det(-2) != Rational(4) * a - Rational(2) * b + c)
+      continue;  // not a quadratic: a builder refused a position
+    const auto root = quadratic_root(a, b, c, k + 4);
+    if (!root) continue;
+    const Rational grid = pow10(k + 2), eps = Rational(1) / pow10(k);
+    const Rational t = Rational(cln::round1(*root * grid)) / grid + eps;
+    // The root lies between t - 2 eps and t: det changes sign there (checked, not assumed).
+    const Rational at = det(t), before = det(t - Rational(2) * eps);
+    if (failed || cln::zerop(at) || !cln::minusp(at * before)) continue;
+    p[m] = p[m] + t * u;
+    return fmt::format("/near-toggle-{}-1e-{}", names[m], k);
+  }
+  return std::string(kToggleNotFound);
 }
 
 /// kind 0 slider-crank, 1 inverted, -1 either.
@@ -170,14 +306,24 @@ MechanismCase draw_slider(Bias bias, int bound, int kind) {
     a = extreme_ratio(o, a, k, shorter);
     suffix = ratio_suffix(k, shorter);
   }
-  if (inverted) return with_suffix(make_inverted_slider_crank(o, a, b, *gen_rate(), *gen_rate()), suffix);
+  if (bias == Bias::QFar || bias == Bias::BetaSmall) suffix = does_not_apply(bias);
+  if (inverted) {
+    if (bias == Bias::NearDeadCentre) {  // A ~10^-k from the slot's pivot O4 (here b): omega ~ 1/|A O4|
+      const int k = draw_exponent(12);
+      a = b + (Rational(1) / pow10(k)) * draw_offset(2, 1);
+      suffix = fmt::format("/near-toggle-1e-{}", k);
+    }
+    const Rational omega = *gen_rate(), omega_dot = *gen_rate();
+    return with_suffix(make_inverted_slider_crank(o, a, b, omega, omega_dot), suffix);
+  }
   Point axis = draw_offset(3, 1);
   if (bias == Bias::NearDeadCentre) {  // the rod nearly perpendicular to the guide: v_B undetermined
     const int k = draw_exponent(12);
     axis = jturn(b - a) + (Rational(1) / pow10(k)) * (b - a);
     suffix = fmt::format("/near-toggle-1e-{}", k);
   }
-  return with_suffix(make_slider_crank(o, a, b, axis, *gen_rate(), *gen_rate()), suffix);
+  const Rational omega = *gen_rate(), omega_dot = *gen_rate();
+  return with_suffix(make_slider_crank(o, a, b, axis, omega, omega_dot), suffix);
 }
 
 rc::Gen<MechanismCase> well_posed(rc::Gen<MechanismCase> g) {
@@ -228,15 +374,28 @@ rc::Gen<MechanismCase> gen_fourbar(std::optional<GrashofClass> grashof, Bias bia
 }
 
 rc::Gen<MechanismCase> gen_watt_sixbar(Bias bias, int bound) {
-  return well_posed(rc::gen::exec([=] { return draw_multi<7>(resolve(bias), bound, make_watt_sixbar); }));
+  using Toggle = std::string (*)(std::array<Point, 7>&);
+  return well_posed(rc::gen::exec(
+      [=] { return draw_multi<7>(resolve(bias), bound, make_watt_sixbar, watt_loop, std::optional<Toggle>()); }));
 }
 
 rc::Gen<MechanismCase> gen_stephenson_sixbar(Bias bias, int bound) {
-  return well_posed(rc::gen::exec([=] { return draw_multi<7>(resolve(bias), bound, make_stephenson_sixbar); }));
+  using Toggle = std::string (*)(std::array<Point, 7>&);
+  return well_posed(rc::gen::exec([=] {
+    return draw_multi<7>(resolve(bias), bound, make_stephenson_sixbar, stephenson_loop, std::optional<Toggle>());
+  }));
 }
 
 rc::Gen<MechanismCase> gen_fig5_eightbar(Bias bias, int bound) {
-  return well_posed(rc::gen::exec([=] { return draw_multi<10>(resolve(bias), bound, make_fig5_eightbar); }));
+  using Toggle = std::string (*)(std::array<Point, 10>&);
+  // A draw whose toggle search failed is drawn again, so NearDeadCentre always gives a toggle.
+  return rc::gen::suchThat(rc::gen::exec([=] {
+                             return draw_multi<10>(resolve(bias), bound, make_fig5_eightbar, fig5_loop,
+                                                   std::optional<Toggle>(fig5_toggle));
+                           }),
+                           [](const MechanismCase& c) {
+                             return c.family.find(kToggleNotFound) == std::string::npos && is_well_posed(c.scene);
+                           });
 }
 
 rc::Gen<MechanismCase> gen_slider_mechanism(Bias bias, int bound) {

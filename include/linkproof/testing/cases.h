@@ -16,7 +16,9 @@
 //                               (guide: ground) at B
 //   slider/inverted             inverted slider-crank: ground, crank, block, rocker; the block
 //                               slides in a slot of the rocker along O4 -> A (Coriolis, SPEC C)
-// A suffix "/near-toggle", "/q-far", "/beta-small" or "/ratio-1e<k>" marks a biased case.
+// A suffix "/near-toggle...", "/near-dead-centre...", "/q-far...", "/beta-small..." or "/ratio-1e<k>"
+// marks a biased case, "/<bias>-does-not-apply" a case drawn under a bias that the family cannot
+// have (testing/generators.h says which and why).
 #pragma once
 
 #include <array>
@@ -74,6 +76,15 @@ MechanismCase make_inverted_slider_crank(const Point& o2, const Point& a, const 
 /// True if the scene solves exactly (valid linkage, mobility = number of inputs, inputs fix the
 /// motion) and no two joints of one link coincide.
 bool is_well_posed(const MechanismScene& scene);
+
+/// The determinant of the square velocity system of a scene, exactly: the rigid-body constraint
+/// rows A q-dot = 0 (mechanism/mechanism_solve.h) and one unit row per input. It is 0 exactly
+/// where the inputs cannot drive the mechanism (a toggle, the dead centre D = 0 of a loop, SPEC
+/// A6), and changes sign across such a configuration, so a sign change of it between two nearby
+/// configurations proves a singular one between them. Its scale depends on the coordinates and
+/// the sign on the numbering: only its zeros and sign changes mean something.
+/// InputError if the system is not square (rows != unknowns) or the scene has no linkage.
+Rational compute_velocity_determinant(const MechanismScene& scene);
 
 /// For RapidCheck's counterexamples and messages: the family and the scene YAML; the polygon's
 /// joints and rates as exact fractions; the class name.

@@ -19,15 +19,41 @@
 //   simpler rates   omega and omega-dot shrink toward 0, then small integers, then halves;
 //   milder bias     the bias exponent k (epsilon = 10^-k, ratio 10^k) shrinks toward 2.
 //
-// Bias toward the hard places (SPEC.md A6; Bias::None draws ordinary cases):
+// Bias toward the hard places (SPEC.md A6; Bias::None draws ordinary cases). A mechanism's
+// loop is read as Dijksman's polygon K_1..K_n (SPEC A1: side n fixed, sides 1..n-3 known, the
+// unknowns r_{n-2}, r_{n-1}); the bias moves K_{n-1} ~10^-k off a line through K_{n-2}. The loops:
+//   four-bar        O2, A, B, O4        (crank, coupler, rocker, ground; j = 1)
+//   Watt I          C, D, E, F          (BCD, DE, EF, CFG fixed: the dyad DE-EF driven by BCD; j = 1)
+//   Stephenson III  A, B, E, F, G       (AB, BCE, EF, FG, ground; j = 1 or 2)
+//   Fig. 5          J01, J12, J23, J34, J40   (pentagon 1-2-3-4-0; j = 1 or 2)
 //   NearDeadCentre  polygons: K_{n-1} at distance ~10^-k from the line K_{n-2} K_n (D ~ 0);
-//                   four-bars: B ~10^-k off the line A O4 (coupler and rocker nearly aligned:
-//                   the toggle where the crank cannot drive)
-//   QFar            polygons: r_{n-2} x (r_1 + r_{n-1}) ~ 10^-k (Q_1 far away)
-//   BetaSmall       polygons: r_1 nearly parallel to r_{n-2} (beta_1 ~ 10^-k)
+//                   four-bars: B ~10^-k off the line A O4 (coupler and rocker nearly aligned: the
+//                   toggle where the crank cannot drive); six-bars: the same on their loop (Watt:
+//                   E off line D F; Stephenson: F off line E G), the mechanism's dead point since
+//                   that loop is a dyad; Fig. 5: its loops are coupled, so no loop's D is the dead
+//                   point: one joint J moves along a small integer direction u to ~10^-k (in t
+//                   of J + t u) past a root of the velocity determinant (compute_velocity_
+//                   determinant, quadratic in t); slider-crank: the rod nearly perpendicular to
+//                   the guide; inverted slider-crank: the block A ~10^-k from the slot's pivot O4
+//                   (the rocker's omega ~ 1/|A O4|: its only dead point, crank driving).
+//                   Labels ".../near-toggle-1e-7" (four-bar, sliders), ".../near-toggle-loop-C.D.E.F-1e-7",
+//                   "eightbar/fig5/near-toggle-J57-1e-7".
+//   QFar            polygons: r_{n-2} x (r_1 + r_{n-1}) ~ 10^-k (Q_1 far away); mechanisms: the
+//                   same with j on their loop ("/q-far-j2-loop-A.B.E.F.G-1e-6"); a four-bar's Q_1
+//                   (crank-rocker pole) is far when the coupler is nearly parallel to the ground.
+//   BetaSmall       polygons: r_1 nearly parallel to r_{n-2} (beta_1 ~ 10^-k); mechanisms: r_j
+//                   nearly parallel to r_{n-2} on their loop ("/beta-small-j1-loop-C.D.E.F-1e-3");
+//                   a four-bar's beta_1 is small when crank and coupler are nearly aligned.
 //   ExtremeRatio    one link 10^k times shorter or longer than the rest, k up to 8
 //   Any             one of the above, or none
-// Biases that do not apply to a family (QFar, BetaSmall on mechanisms) give ordinary cases.
+// Biases that cannot apply give an ordinary case labelled "/<bias>-does-not-apply":
+//   QFar, BetaSmall on sliders: a loop with a prismatic pair is not one of Dijksman's polygons
+//   (revolute joints K_j, SPEC A1; mechanism/dijksman_compound.h refuses it), so it has no Q_j,
+//   P'_j or beta_j (the slider-crank's output never turns: i_{n-1,1} = 0);
+//   any bias on gen_fourbar(GrashofClass::ChangePoint): s + l = p + q is an equality that
+//   moving a joint by 10^-k breaks, so the class could not be kept.
+// gen_fig5_eightbar(NearDeadCentre) redraws a case whose six (joint, direction) tries found no
+// root within |t| <= 8, so it always gives a near-toggle case.
 //
 // Coverage: classify_case(c) calls RC_CLASSIFY with the case's family label (testing/cases.h)
 // without the bias exponent.
