@@ -8,6 +8,7 @@
 #include "linkproof/core/symbolic_scalar.h"
 #include "linkproof/proof/lift.h"
 #include "linkproof/symbolic/tape.h"
+#include "rational_normal.h"
 #include "symbolic_polygon.h"
 
 namespace linkproof {
@@ -32,6 +33,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
   ZeroTestLog log;
   const PolygonContext<ex> ctx = build_polygon_context_from<ex>(engine, sp.polygon, zero_rates, false);
   std::vector<ex> compared, sides, claim_divisors;
+  RationalNormalizer normalizer;  // shared by every coefficient: their common parts are normalised once
   const auto compare_at = [&](int j) {
     IndexBindings b;
     b.j = j;
@@ -53,7 +55,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
       sides.push_back(l);
       sides.push_back(rr);
       ++r.monomials;
-      if (r.first_nonzero.empty() && !ScalarTraits<ex>::is_zero(d))
+      if (r.first_nonzero.empty() && !normalizer.is_zero(d))
         r.first_nonzero = (j ? "j=" + std::to_string(j) + ": " : "") + monomial_label(m);
     }
   };
