@@ -77,7 +77,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     // expression (which GiNaC may have cancelled on the spot, D/D = 1).
     std::vector<ex> divisors = divisors_in(sides);
     divisors.insert(divisors.end(), claim_divisors.begin(), claim_divisors.end());
-    *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr);
+    *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr, normalizer);
   }
   r.seconds = since(start);
   return r;

@@ -88,8 +88,15 @@ Fraction RationalNormalizer::compute(const ex& e) {
   return make(GiNaC::expand(nd.op(0)), GiNaC::expand(nd.op(1)), false);
 }
 
+GiNaC::ex RationalNormalizer::numerator(const ex& e) {
+  const Fraction& f = normal(e);
+  if (f.polynomial) return f.num;
+  return GiNaC::expand(GiNaC::numer(GiNaC::normal(e)));
+}
+
 bool RationalNormalizer::is_zero(const ex& e) {
   if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) return e.is_zero();
+  if (point_.shows_nonzero(e)) return false;  // rejects only: a zero answer is symbolic
   return normal(e).num.is_zero();
 }
 

@@ -21,6 +21,8 @@
 
 #include <unordered_map>
 
+#include "linkproof/core/modular_point.h"
+
 namespace linkproof::proof_detail {
 
 /// A rational function as numerator / denominator, both expanded; the denominator is never 0.
@@ -33,6 +35,9 @@ class RationalNormalizer {
  public:
   /// The normal form of e (throws GiNaC::pole_error if a denominator is identically 0).
   const Fraction& normal(const GiNaC::ex& e);
+  /// The numerator of e's normal form (expanded; GiNaC's normal() where e is not a rational
+  /// operation throughout, so that it is reduced against the denominator).
+  GiNaC::ex numerator(const GiNaC::ex& e);
   /// e is identically zero as a rational function of its symbols.
   bool is_zero(const GiNaC::ex& e);
   /// d e / d s is identically zero (from the normal form N/D: N' D - N D' = 0).
@@ -41,6 +46,7 @@ class RationalNormalizer {
  private:
   Fraction compute(const GiNaC::ex& e);
   std::unordered_map<GiNaC::ex, Fraction, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
+  ModularPoint point_;  // a quick rejection before the symbolic normal form
 };
 
 }  // namespace linkproof::proof_detail
