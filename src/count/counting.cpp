@@ -83,13 +83,13 @@ std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>&
   const RelativeRates rates(n);
 
   // Build the three families first (this throws at a dead centre before anything is ranked).
-  std::vector<RateRelation> velocity, eq22, acceleration;
+  std::vector<RateRelation> velocity, eq22, companion;
   for (int f = 1; f <= n; ++f) {
     const BodyPolygon q = with_fixed_side(bp, f);
     for (auto& r : velocity_relations(rates, q)) velocity.push_back(std::move(r));
     auto acc = acceleration_relations(rates, q, omega);
-    eq22.push_back(acc[0]);
-    for (auto& r : acc) acceleration.push_back(std::move(r));
+    eq22.push_back(std::move(acc[0]));
+    companion.push_back(std::move(acc[1]));
   }
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -97,20 +97,27 @@ std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>&
   const RankResult tri_state = state_of(tri, seconds_since(t0));
 
   std::vector<FixedSideFamily> out;
-  const auto rank_family = [&](std::string name, const std::vector<RateRelation>& family) {
+  // `start` (a reduced basis holding the triangles, and earlier relations `earlier` long) plus
+  // `family`: the (22)+companion family continues from the (22) one (the rank of a set of
+  // relations does not depend on their order), so the (22) rows are reduced once.
+  const auto rank_family = [&](std::string name, const RowEchelon<Rational>& start, double earlier_seconds,
+                               const std::vector<RateRelation>& family, long size) {
     const auto t1 = std::chrono::steady_clock::now();
-    RowEchelon<Rational> e = tri;  // the reduced triangle basis, reused
+    RowEchelon<Rational> e = start;
     add_and_rank(e, family);
     FixedSideFamily fam;
     fam.name = std::move(name);
-    fam.relations = static_cast<long>(family.size());
+    fam.relations = size;
     fam.triangles = tri_state;
-    fam.combined = state_of(e, tri_state.seconds + seconds_since(t1));
+    fam.combined = state_of(e, earlier_seconds + seconds_since(t1));
     out.push_back(std::move(fam));
+    return e;
   };
-  rank_family("velocity (5),(6)", velocity);
-  rank_family("acceleration (22)", eq22);
-  rank_family("acceleration (22)+companion", acceleration);
+  rank_family("velocity (5),(6)", tri, tri_state.seconds, velocity, static_cast<long>(velocity.size()));
+  const RowEchelon<Rational> with_eq22 =
+      rank_family("acceleration (22)", tri, tri_state.seconds, eq22, static_cast<long>(eq22.size()));
+  rank_family("acceleration (22)+companion", with_eq22, out.back().combined.seconds, companion,
+              static_cast<long>(eq22.size() + companion.size()));
   return out;
 }
 

@@ -29,7 +29,9 @@ TEST(ModularPoint, NeverRejectsAnIdenticallyZeroRationalFunction) {
   for (const ex& e : {zero1, zero2, zero3}) {
     EXPECT_FALSE(p.shows_nonzero(e)) << e;
     const auto v = p.value(e);
-    if (v) EXPECT_EQ(*v, 0u) << e;
+    if (v) {
+      EXPECT_EQ(*v, 0u) << e;
+    }
   }
 }
 
