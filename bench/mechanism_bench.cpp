@@ -3,9 +3,8 @@
 // multi-polygon method; a random 30-link chain of RRR dyads (exact and double).
 #include <benchmark/benchmark.h>
 
-#include <random>
-
 #include "linkproof/io/mechanism_scene.h"
+#include "mechanism_chain.h"
 #include "linkproof/mechanism/dijksman_compound.h"
 #include "linkproof/mechanism/mechanism_check.h"
 #include "linkproof/mechanism/mechanism_vector_route.h"
@@ -16,34 +15,6 @@ namespace {
 
 MechanismScene eightbar() {
   return load_mechanism_scene(std::string(LINKPROOF_BENCH_SOURCE_DIR) + "/verify/scenes/mechanisms/fig5_eightbar.yaml");
-}
-
-// A four-bar, then dyads (two new links, three joints) each pinned to two random earlier links:
-// mobility stays 1. Coordinates are random rationals (fixed seed), so the chain is generic.
-MechanismScene random_chain(int links, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> c(-50, 50);
-  const auto point = [&] { return Vec2<Rational>{Rational(c(rng)) / 7, Rational(c(rng)) / 7}; };
-  std::vector<std::string> names;
-  for (int l = 0; l < links; ++l) names.push_back(std::to_string(l));
-  std::vector<LinkageJoint> joints;
-  const auto add = [&](int a, int b) {
-    joints.push_back({"J" + std::to_string(joints.size()), JointType::Revolute, {a, b}, point(), {}});
-  };
-  add(0, 1), add(1, 2), add(2, 3), add(3, 0);
-  for (int p = 4; p + 1 < links; p += 2) {
-    std::uniform_int_distribution<int> earlier(0, p - 1);
-    const int e1 = earlier(rng);
-    int e2 = earlier(rng);
-    while (e2 == e1) e2 = earlier(rng);
-    add(e1, p), add(p, p + 1), add(p + 1, e2);
-  }
-  MechanismScene s;
-  s.name = "chain";
-  s.source = "chain";
-  s.linkage = Linkage(names, 0, joints);
-  s.inputs = {MechanismInput{MechanismInput::Kind::Link, 1, Rational(1), Rational(1) / 2}};
-  return s;
 }
 
 void BM_EightBarExactSymbolic(benchmark::State& st) {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "linkproof/core/error.h"
+#include "linkproof/core/modular_point.h"
 
 namespace linkproof {
 
@@ -22,6 +23,12 @@ void ZeroTestLog::record(const GiNaC::ex& e) {
 
 bool ScalarTraits<GiNaC::ex>::is_zero(const GiNaC::ex& x) {
   if (GiNaC::is_exactly_a<GiNaC::numeric>(x)) return x.is_zero();
+  // Non-zero at one point where it is defined: not identically zero (modular_point.h); only a
+  // "zero" answer needs the symbolic normal form.
+  if (ModularPoint().shows_nonzero(x)) {
+    ZeroTestLog::record(x);
+    return false;
+  }
   const GiNaC::ex v = GiNaC::normal(x);
   if (!GiNaC::is_exactly_a<GiNaC::numeric>(v)) ZeroTestLog::record(v);
   return v.is_zero();

@@ -1,5 +1,7 @@
 #include "linkproof/mechanism/relative_rates.h"
 
+#include <optional>
+
 #include "linkproof/core/error.h"
 #include "linkproof/geometry/closed_forms.h"
 
@@ -58,6 +60,25 @@ BodyPolygon with_fixed_side(const BodyPolygon& p, int f) {
 
 namespace {
 
+/// The closed forms of p, kept for the next call: velocity_relations and acceleration_relations
+/// of one polygon (count_fixed_side_relations asks for both in turn) compute them once.
+const ClosedForms<Rational>& closed_forms_of(const Polygon<Rational>& p) {
+  thread_local std::optional<Polygon<Rational>> last;
+  thread_local ClosedForms<Rational> forms;
+  const auto same = [&p] {
+    if (!last || last->n() != p.n()) return false;
+    for (int k = 1; k <= p.n(); ++k)
+      if (last->joint(k).x != p.joint(k).x || last->joint(k).y != p.joint(k).y) return false;
+    return true;
+  };
+  if (!same()) {
+    last.reset();
+    forms = compute_closed_forms(p);  // throws at a dead centre: nothing is kept then
+    last = p;
+  }
+  return forms;
+}
+
 /// rate_{lead,n} - sum_j coeff_j rate_{j,n} as a row.
 SparseRow<Rational> polygon_row(const RelativeRates& rates, const BodyPolygon& p, int lead,
                                 const std::vector<Rational>& coeff) {
@@ -79,7 +100,7 @@ std::string side_label(const BodyPolygon& p) {
 }  // namespace
 
 std::vector<RateRelation> velocity_relations(const RelativeRates& rates, const BodyPolygon& p) {
-  const ClosedForms<Rational> c = compute_closed_forms(p.polygon);
+  const ClosedForms<Rational>& c = closed_forms_of(p.polygon);
   const int n = p.polygon.n();
   const std::string at = " of polygon " + side_label(p);
   return {{"(5)" + at, polygon_row(rates, p, n - 1, c.i_out), 0},
@@ -88,7 +109,7 @@ std::vector<RateRelation> velocity_relations(const RelativeRates& rates, const B
 
 std::vector<RateRelation> acceleration_relations(const RelativeRates& rates, const BodyPolygon& p,
                                                  const std::vector<Rational>& omega) {
-  const ClosedForms<Rational> c = compute_closed_forms(p.polygon);
+  const ClosedForms<Rational>& c = closed_forms_of(p.polygon);
   const int n = p.polygon.n();
   const Rational& w_n = omega[static_cast<size_t>(p.bodies[static_cast<size_t>(n - 1)])];
   Rational sum_lambda = 0, sum_mu = 0, a1 = 0, a2 = 0, q1 = 0, q2 = 0;

@@ -53,10 +53,10 @@ Named side_degeneracies(const PolygonContext<ex>& c, const SideNames& names) {
   return v;
 }
 
-Named construction_degeneracies(const PolygonContext<ex>& c, const SideNames& names) {
+Named construction_degeneracies(const PolygonContext<ex>& c, const SideNames& names, RationalNormalizer& normalizer) {
   Named v;
   const int n = c.n;
-  const auto numerator_of = [](const ex& e) { return GiNaC::numer(GiNaC::normal(e)); };
+  const auto numerator_of = [&normalizer](const ex& e) { return normalizer.numerator(e); };
   for (int j = 1; j <= n - 3; ++j) {
     const std::string s = names(j, n);
     const auto& k = c.construction_for()[static_cast<size_t>(j - 1)];
@@ -100,11 +100,12 @@ std::vector<ex> divisors_in(const std::vector<ex>& expressions) {
 }
 
 std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const std::vector<ex>& divisors,
-                                             const SideNames& names, const GiNaC::exmap* l_as_j) {
+                                             const SideNames& names, const GiNaC::exmap* l_as_j,
+                                             RationalNormalizer& normalizer) {
   // The divisors' numerators, each once.
   std::vector<ex> rest;
   for (const ex& d : divisors) {
-    const ex p = GiNaC::expand(GiNaC::numer(GiNaC::normal(d)));
+    const ex p = normalizer.numerator(d);
     if (GiNaC::is_exactly_a<GiNaC::numeric>(p)) continue;
     if (std::none_of(rest.begin(), rest.end(), [&](const ex& q) { return q.is_equal(p); })) rest.push_back(p);
   }
@@ -112,10 +113,23 @@ std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const 
   // large numerators of the construction's divisors as a whole is what costs).
   std::vector<ex> factors;
   std::vector<std::string> meanings;
+  // A degeneracy with no common factor with any numerator divides none of them: not factored.
+  const auto shares_a_factor = [&rest](const ex& poly) {
+    const ex h = GiNaC::expand(poly);
+    if (GiNaC::is_exactly_a<GiNaC::numeric>(h)) return false;
+    return std::any_of(rest.begin(), rest.end(), [&h](const ex& p) {
+      try {
+        return !GiNaC::is_exactly_a<GiNaC::numeric>(GiNaC::gcd(p, h));
+      } catch (const std::exception&) {
+        return true;  // not a polynomial gcd can take: factored as before
+      }
+    });
+  };
   const auto strip = [&](const Named& degeneracies) {
     Named named;
     for (const auto& [poly, meaning] : degeneracies)
-      for (const ex& f : irreducible_factors(poly)) named.emplace_back(GiNaC::expand(f), meaning);
+      if (shares_a_factor(poly))
+        for (const ex& f : irreducible_factors(poly)) named.emplace_back(GiNaC::expand(f), meaning);
     for (ex& p : rest)
       for (const auto& [g, m] : named) {
         ex q;
@@ -133,7 +147,7 @@ std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const 
                rest.end());
   };
   strip(side_degeneracies(c, names));
-  if (!rest.empty()) strip(construction_degeneracies(c, names));
+  if (!rest.empty()) strip(construction_degeneracies(c, names, normalizer));
   for (const ex& p : rest)
     for (const ex& f : irreducible_factors(p))
       if (std::none_of(factors.begin(), factors.end(), [&](const ex& g) { return same_up_to_constant(f, g); })) {

@@ -8,6 +8,7 @@
 
 #include "linkproof/claims/polygon_context.h"
 #include "linkproof/proof/prove.h"
+#include "rational_normal.h"
 #include "symbolic_polygon.h"
 
 namespace linkproof::proof_detail {
@@ -21,7 +22,10 @@ std::vector<GiNaC::ex> divisors_in(const std::vector<GiNaC::ex>& expressions);
 /// the sides as `names` prints them. With `l_as_j` (the base of a proof for every n, where input
 /// 2 stands for any l and input 1 for any j), a factor about input l is the same family as the
 /// one about j: it is printed with l's symbols replaced by j's and kept once.
+/// `normalizer` (that of the proof, whose memo holds the divisors already) gives the numerators;
+/// a named degeneracy is factored only if it has a common factor (a gcd) with some numerator.
 std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<GiNaC::ex>& c, const std::vector<GiNaC::ex>& divisors,
-                                             const SideNames& names, const GiNaC::exmap* l_as_j);
+                                             const SideNames& names, const GiNaC::exmap* l_as_j,
+                                             RationalNormalizer& normalizer);
 
 }  // namespace linkproof::proof_detail

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "linkproof/core/symbolic_scalar.h"
+#include "rational_normal.h"
 #include "symbolic_polygon.h"
 
 namespace linkproof {
@@ -20,6 +21,7 @@ LiftCheck check_lift_lemma(GroundTruthEngine& engine, const DataClaim& claim, in
                                   std::vector<ex>(static_cast<size_t>(n - 3), ex(0))};
   ZeroTestLog log;  // the zero tests made here are not part of any proof
   const PolygonContext<ex> ctx = build_polygon_context_from<ex>(engine, sp.polygon, zero_rates, false);
+  proof_detail::RationalNormalizer normalizer;
   const auto note = [&r](const std::string& v) {
     for (const auto& x : r.violations)
       if (x == v) return;
@@ -41,7 +43,7 @@ LiftCheck check_lift_lemma(GroundTruthEngine& engine, const DataClaim& claim, in
         for (int k = 1; k <= n - 1; ++k) {
           if (allowed.count(k)) continue;
           for (const ex& s : sp.side_symbols(k)) {
-            if (!coefficient.has(s) || ScalarTraits<ex>::is_zero(coefficient.diff(GiNaC::ex_to<GiNaC::symbol>(s))))
+            if (normalizer.is_constant_in(coefficient, GiNaC::ex_to<GiNaC::symbol>(s)))
               continue;
             note("the coefficient of " + monomial_label(monomial) + (j ? " (j = " + std::to_string(j) + ")" : "") +
                  " in the " + (side == &claim.lhs ? "lhs" : "rhs") + " depends on r_" + std::to_string(k) +

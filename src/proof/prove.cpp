@@ -10,6 +10,7 @@
 #include "linkproof/core/time_budget.h"
 #include "linkproof/proof/lift.h"
 #include "linkproof/symbolic/tape.h"
+#include "rational_normal.h"
 #include "symbolic_polygon.h"
 
 namespace linkproof {
@@ -35,6 +36,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
   const PolygonContext<ex> ctx = build_polygon_context_from<ex>(engine, sp.polygon, zero_rates, false);
   std::vector<ex> compared, sides, claim_divisors;
   const std::string phase = "the per-n proof of " + claim.info.id + " at n = " + std::to_string(n);
+  RationalNormalizer normalizer;  // shared by every coefficient: their common parts are normalised once
   const auto compare_at = [&](int j) {
     IndexBindings b;
     b.j = j;
@@ -57,7 +59,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
       sides.push_back(l);
       sides.push_back(rr);
       ++r.monomials;
-      if (r.first_nonzero.empty() && !ScalarTraits<ex>::is_zero(d))
+      if (r.first_nonzero.empty() && !normalizer.is_zero(d))
         r.first_nonzero = (j ? "j=" + std::to_string(j) + ": " : "") + monomial_label(m);
     }
   };
@@ -79,7 +81,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     // expression (which GiNaC may have cancelled on the spot, D/D = 1).
     std::vector<ex> divisors = divisors_in(sides);
     divisors.insert(divisors.end(), claim_divisors.begin(), claim_divisors.end());
-    *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr);
+    *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr, normalizer);
   }
   r.seconds = since(start);
   return r;

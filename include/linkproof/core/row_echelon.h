@@ -79,18 +79,45 @@ class RowEchelon {
   /// [0, columns()).
   RowOutcome add(const SparseRow<T>& row, const T& rhs) {
     ++relations_;
-    SparseRow<T> r = row;
     T b = rhs;
-    // 1. Reduce by the basis (one subtraction per pivot column of the original row).
+    // 1. Reduce by the basis (one subtraction per pivot column of the original row), in a dense
+    //    scratch row: each subtraction touches only the basis row's entries (no row copies).
+    if (static_cast<int>(scratch_.size()) < columns_) {
+      scratch_.resize(static_cast<size_t>(columns_), from_int<T>(0));
+      touched_mark_.resize(static_cast<size_t>(columns_), 0);
+    }
+    const auto touch = [this](int col) {
+      if (!touched_mark_[static_cast<size_t>(col)]) {
+        touched_mark_[static_cast<size_t>(col)] = 1;
+        touched_.push_back(col);
+      }
+    };
     for (const auto& [col, coeff] : row) {
       LINKPROOF_ASSERT(col >= 0 && col < columns_, "RowEchelon: column out of range");
+      scratch_[static_cast<size_t>(col)] = coeff;
+      touch(col);
+    }
+    for (const auto& [col, coeff] : row) {
       const int p = pivot_row_[static_cast<size_t>(col)];
       if (p < 0) continue;
-      const T f = coefficient(r, col);
+      const T f = scratch_[static_cast<size_t>(col)];
       if (is_zero(f)) continue;
-      r = axpy(r, f, basis_[static_cast<size_t>(p)].row);
+      for (const auto& [c, v] : basis_[static_cast<size_t>(p)].row) {
+        touch(c);
+        scratch_[static_cast<size_t>(c)] = scratch_[static_cast<size_t>(c)] - f * v;
+      }
       b = b - f * basis_[static_cast<size_t>(p)].rhs;
     }
+    std::sort(touched_.begin(), touched_.end());
+    SparseRow<T> r;
+    r.reserve(touched_.size());
+    for (int c : touched_) {
+      T& v = scratch_[static_cast<size_t>(c)];
+      if (!is_zero(v)) r.emplace_back(c, std::move(v));
+      v = from_int<T>(0);
+      touched_mark_[static_cast<size_t>(c)] = 0;
+    }
+    touched_.clear();
     if (r.empty()) {
       if (is_zero(b)) return RowOutcome::Dependent;
       inconsistent_ = true;
@@ -116,6 +143,37 @@ class RowEchelon {
     basis_.push_back({pc, std::move(r), b});
     index_row(id);
     return RowOutcome::Independent;
+  }
+
+  /// Appends `more` unknowns (columns columns() .. columns() + more - 1) that no relation so far
+  /// contains: the rank is unchanged, later relations may use them.
+  void add_columns(int more) {
+    columns_ += more;
+    pivot_row_.resize(static_cast<size_t>(columns_), -1);
+    rows_with_column_.resize(static_cast<size_t>(columns_));
+  }
+
+  /// The same system with unknown c renamed to to[c] (a permutation of 0 .. columns() - 1):
+  /// same rank, relations and consistency. The basis stays reduced (that property does not
+  /// depend on the order of the columns), so no row is eliminated again.
+  RowEchelon renumbered(const std::vector<int>& to) const {
+    LINKPROOF_ASSERT(static_cast<int>(to.size()) == columns_, "RowEchelon::renumbered: wrong size");
+    RowEchelon out(columns_);
+    out.relations_ = relations_;
+    out.inconsistent_ = inconsistent_;
+    out.basis_.reserve(basis_.size());
+    for (const Basis& bs : basis_) {
+      SparseRow<T> row;
+      row.reserve(bs.row.size());
+      for (const auto& e : bs.row) row.emplace_back(to[static_cast<size_t>(e.first)], e.second);
+      std::sort(row.begin(), row.end(), [](const auto& a, const auto& c) { return a.first < c.first; });
+      const int id = static_cast<int>(out.basis_.size());
+      const int pivot = to[static_cast<size_t>(bs.pivot)];
+      out.pivot_row_[static_cast<size_t>(pivot)] = id;
+      out.basis_.push_back({pivot, std::move(row), bs.rhs});
+      out.index_row(id);
+    }
+    return out;
   }
 
   /// The value of unknown `col` if the relations fix it (its pivot row has no free column),
@@ -178,6 +236,9 @@ class RowEchelon {
   std::vector<Basis> basis_;
   std::vector<int> pivot_row_;                   // column -> basis row, -1 if not a pivot
   std::vector<std::vector<int>> rows_with_column_;  // non-pivot column -> rows that may hold it
+  std::vector<T> scratch_;                       // dense row of add(), all zero between calls
+  std::vector<char> touched_mark_;               // columns of scratch_ in use
+  std::vector<int> touched_;
 };
 
 }  // namespace linkproof

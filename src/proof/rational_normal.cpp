@@ -1,0 +1,110 @@
+#include "rational_normal.h"
+
+namespace linkproof::proof_detail {
+
+namespace {
+
+using GiNaC::ex;
+
+bool is_one(const ex& e) { return GiNaC::is_exactly_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_equal(1); }
+
+/// p = g * cp, q = g * cq; without a gcd when either side is opaque (then g = 1: still exact).
+void split_gcd(const ex& p, const ex& q, bool polynomial, ex& cp, ex& cq) {
+  if (!polynomial || is_one(p) || is_one(q)) {
+    cp = p;
+    cq = q;
+    return;
+  }
+  GiNaC::gcd(p, q, &cp, &cq);
+}
+
+Fraction make(const ex& num, const ex& den, bool polynomial) {
+  if (den.is_zero()) throw GiNaC::pole_error("RationalNormalizer: division by an identically zero expression", 1);
+  return {num, den, polynomial};
+}
+
+/// a/b + c/d over the common denominator, not yet cancelled.
+Fraction sum(const Fraction& a, const Fraction& b) {
+  const bool poly = a.polynomial && b.polynomial;
+  if (b.num.is_zero()) return a;
+  if (a.num.is_zero()) return b;
+  if (a.den.is_equal(b.den)) return make(GiNaC::expand(a.num + b.num), a.den, poly);
+  ex ca, cb;  // a.den = g ca, b.den = g cb
+  split_gcd(a.den, b.den, poly, ca, cb);
+  return make(GiNaC::expand(a.num * cb + b.num * ca), GiNaC::expand(a.den * cb), poly);
+}
+
+/// (a/b)(c/d), with the cross gcds cancelled.
+Fraction product(const Fraction& a, const Fraction& b) {
+  const bool poly = a.polynomial && b.polynomial;
+  if (a.num.is_zero() || b.num.is_zero()) return make(0, 1, poly);
+  ex an, bd, bn, ad;
+  split_gcd(a.num, b.den, poly, an, bd);
+  split_gcd(b.num, a.den, poly, bn, ad);
+  return make(GiNaC::expand(an * bn), GiNaC::expand(ad * bd), poly);
+}
+
+Fraction cancelled(const Fraction& f) {
+  if (f.num.is_zero()) return make(0, 1, f.polynomial);
+  ex n, d;
+  split_gcd(f.num, f.den, f.polynomial, n, d);
+  return make(n, d, f.polynomial);
+}
+
+}  // namespace
+
+const Fraction& RationalNormalizer::normal(const ex& e) {
+  const auto it = memo_.find(e);
+  if (it != memo_.end()) return it->second;
+  Fraction f = compute(e);
+  return memo_.emplace(e, std::move(f)).first->second;
+}
+
+Fraction RationalNormalizer::compute(const ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return make(e, 1, true);
+  if (GiNaC::is_exactly_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational()) return make(e, 1, true);
+  if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
+    Fraction acc = make(0, 1, true);
+    for (size_t i = 0; i < e.nops(); ++i) acc = sum(acc, normal(e.op(i)));
+    return cancelled(acc);
+  }
+  if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
+    Fraction acc = make(1, 1, true);
+    for (size_t i = 0; i < e.nops(); ++i) acc = product(acc, normal(e.op(i)));
+    return acc;
+  }
+  if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1)) &&
+      GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer()) {
+    const Fraction& b = normal(e.op(0));
+    const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
+    if (k.is_zero()) return make(1, 1, true);
+    if (k.is_positive()) return make(GiNaC::expand(GiNaC::pow(b.num, k)), GiNaC::expand(GiNaC::pow(b.den, k)), b.polynomial);
+    if (b.num.is_zero()) throw GiNaC::pole_error("RationalNormalizer: division by an identically zero expression", 1);
+    return make(GiNaC::expand(GiNaC::pow(b.den, -k)), GiNaC::expand(GiNaC::pow(b.num, -k)), b.polynomial);
+  }
+  // Not a rational operation (a function, a non-integer power, a non-rational number): GiNaC's
+  // own normal form, kept opaque (no gcd is taken with it).
+  const ex nd = GiNaC::normal(e).numer_denom();
+  return make(GiNaC::expand(nd.op(0)), GiNaC::expand(nd.op(1)), false);
+}
+
+GiNaC::ex RationalNormalizer::numerator(const ex& e) {
+  const Fraction& f = normal(e);
+  if (f.polynomial) return f.num;
+  return GiNaC::expand(GiNaC::numer(GiNaC::normal(e)));
+}
+
+bool RationalNormalizer::is_zero(const ex& e) {
+  if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) return e.is_zero();
+  if (point_.shows_nonzero(e)) return false;  // rejects only: a zero answer is symbolic
+  return normal(e).num.is_zero();
+}
+
+bool RationalNormalizer::is_constant_in(const ex& e, const GiNaC::symbol& s) {
+  if (!e.has(s)) return true;
+  const Fraction& f = normal(e);
+  if (!f.num.has(s) && !f.den.has(s)) return true;
+  return GiNaC::expand(f.num.diff(s) * f.den - f.num * f.den.diff(s)).is_zero();
+}
+
+}  // namespace linkproof::proof_detail

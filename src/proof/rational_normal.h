@@ -1,0 +1,52 @@
+// Zero tests of rational functions built as expression DAGs, for the per-n proofs and the lift
+// check. Private to src/proof.
+//
+// GiNaC's normal() decides "identically zero as a rational function", but it walks the
+// expression as a tree: a subexpression shared by many nodes (the construction's points, the
+// truth's solved rates: the trees of a proof are 15-30 times their DAGs) is normalised again at
+// every use. RationalNormalizer computes the same normal form, numerator / denominator as
+// expanded polynomials, once per distinct node (memoised by structural equality), combining the
+// children's fractions as normal() does:
+//   a/b + c/d = (a d' + c b') / (g b' d')   with g = gcd(b, d), b = g b', d = g d',
+//   (a/b)(c/d), powers with integer exponents, then the gcd of numerator and denominator
+//   cancelled. A node that is not a rational operation (a function such as abs, a non-integer
+//   power) is normalised by normal() itself and kept as an opaque numerator / denominator.
+// Soundness does not rest on the gcds (they only keep the polynomials small): every step is an
+// identity of rational functions, so the numerator is the zero polynomial iff the expression is
+// identically zero wherever it is defined. As with normal(), cancelled factors may vanish: the
+// exceptional sets are read off the unsimplified expressions (exceptional_set.h), not from here.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <unordered_map>
+
+#include "linkproof/core/modular_point.h"
+
+namespace linkproof::proof_detail {
+
+/// A rational function as numerator / denominator, both expanded; the denominator is never 0.
+struct Fraction {
+  GiNaC::ex num, den;
+  bool polynomial = true;  ///< false if num or den holds an opaque part (no gcd is taken then)
+};
+
+class RationalNormalizer {
+ public:
+  /// The normal form of e (throws GiNaC::pole_error if a denominator is identically 0).
+  const Fraction& normal(const GiNaC::ex& e);
+  /// The numerator of e's normal form (expanded; GiNaC's normal() where e is not a rational
+  /// operation throughout, so that it is reduced against the denominator).
+  GiNaC::ex numerator(const GiNaC::ex& e);
+  /// e is identically zero as a rational function of its symbols.
+  bool is_zero(const GiNaC::ex& e);
+  /// d e / d s is identically zero (from the normal form N/D: N' D - N D' = 0).
+  bool is_constant_in(const GiNaC::ex& e, const GiNaC::symbol& s);
+
+ private:
+  Fraction compute(const GiNaC::ex& e);
+  std::unordered_map<GiNaC::ex, Fraction, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
+  ModularPoint point_;  // a quick rejection before the symbolic normal form
+};
+
+}  // namespace linkproof::proof_detail
