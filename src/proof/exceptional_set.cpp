@@ -131,7 +131,9 @@ std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const 
       if (shares_a_factor(poly))
         for (const ex& f : irreducible_factors(poly)) named.emplace_back(GiNaC::expand(f), meaning);
     for (ex& p : rest)
-      for (const auto& [g, m] : named) {
+      for (const auto& named_factor : named) {
+        const ex& g = named_factor.first;  // not a structured binding: clang 14 cannot capture one
+        const std::string& m = named_factor.second;
         ex q;
         bool used = false;
         while (!GiNaC::is_exactly_a<GiNaC::numeric>(p) && GiNaC::divide(p, g, q)) {
