@@ -16,6 +16,12 @@
 // operation, and the product of two such values O(m^2) (the Theta(m^2) pair terms). On the
 // motion tape (size O(n)) a whole evaluation is O(n^2) operations in T.
 //
+// The constant part is tracked structurally (`has_constant`): a rate variable has none, and a
+// product of two jets without one has none. The product of two jets then has a linear part only
+// from factors that do have a constant, so omega-dot (a form with no constant, linear in the
+// omega-dot_j, quadratic in the omega_j) has no linear omega_j entries at all, not entries
+// whose value happens to be 0 * 1.
+//
 // Operations are the tape's (sum, product, quotient, integer power). A quotient by a value that
 // contains rates, or a product of degree > 2 in the rates, is an InternalError: the solution is
 // a polynomial of degree 2 in the rates with rate-free denominators, or the engine is wrong.
@@ -37,6 +43,7 @@ struct RateJet {
   T constant;
   std::vector<std::pair<std::uint32_t, T>> linear;     ///< (v, L_v), sorted by v, v unique
   std::vector<std::pair<std::uint64_t, T>> quadratic;  ///< (quadratic_key(v, w), Q_vw), v <= w, sorted, unique
+  bool has_constant = true;  ///< false: the constant part is structurally absent (then `constant` is 0)
 
   bool is_constant() const { return linear.empty() && quadratic.empty(); }
   /// The key of r_v r_w with v <= w: sorts by v, then w.
@@ -73,7 +80,7 @@ class TapeJetEvaluator {
           if (in.a < first_rate_) {
             r = {numbers[in.a], {}, {}};
           } else {
-            r = {zero, {{static_cast<std::uint32_t>(in.a - first_rate_), one}}, {}};
+            r = {zero, {{static_cast<std::uint32_t>(in.a - first_rate_), one}}, {}, false};
           }
           break;
         case Tape::Op::Constant: r = {constants_[in.a], {}, {}}; break;
@@ -126,11 +133,14 @@ class TapeJetEvaluator {
   }
 
   RateJet<T> sum(const std::uint32_t* args, std::uint32_t count) const {
-    RateJet<T> r{registers_[args[0]].constant, {}, {}};
+    RateJet<T> r{from_int<T>(0), {}, {}, false};
     size_t lin = 0, quad = 0;
     for (std::uint32_t t = 0; t < count; ++t) {
       const RateJet<T>& x = registers_[args[t]];
-      if (t > 0) r.constant = r.constant + x.constant;
+      if (x.has_constant) {
+        r.constant = r.has_constant ? r.constant + x.constant : x.constant;
+        r.has_constant = true;
+      }
       lin += x.linear.size();
       quad += x.quadratic.size();
     }
@@ -154,14 +164,14 @@ class TapeJetEvaluator {
   }
 
   static RateJet<T> scale(const RateJet<T>& a, const T& k) {
-    RateJet<T> r{a.constant * k, a.linear, a.quadratic};
+    RateJet<T> r{a.has_constant ? a.constant * k : a.constant, a.linear, a.quadratic, a.has_constant};
     for (auto& [v, c] : r.linear) c = c * k;
     for (auto& [v, c] : r.quadratic) c = c * k;
     return r;
   }
 
   static RateJet<T> divide(const RateJet<T>& a, const T& d) {
-    RateJet<T> r{a.constant / d, a.linear, a.quadratic};
+    RateJet<T> r{a.has_constant ? a.constant / d : a.constant, a.linear, a.quadratic, a.has_constant};
     for (auto& [v, c] : r.linear) c = c / d;
     for (auto& [v, c] : r.quadratic) c = c / d;
     return r;
@@ -175,10 +185,13 @@ class TapeJetEvaluator {
     }
     if (!a.quadratic.empty() || !b.quadratic.empty())
       throw InternalError("jet: a product of degree > 2 in the rates in the solution");
-    RateJet<T> r{a.constant * b.constant, {}, {}};
+    const bool both = a.has_constant && b.has_constant;
+    RateJet<T> r{both ? a.constant * b.constant : from_int<T>(0), {}, {}, both};
     r.linear.reserve(a.linear.size() + b.linear.size());
-    for (const auto& [v, c] : a.linear) r.linear.emplace_back(v, c * b.constant);
-    for (const auto& [v, c] : b.linear) r.linear.emplace_back(v, a.constant * c);
+    if (b.has_constant)
+      for (const auto& [v, c] : a.linear) r.linear.emplace_back(v, c * b.constant);
+    if (a.has_constant)
+      for (const auto& [v, c] : b.linear) r.linear.emplace_back(v, a.constant * c);
     combine(r.linear);
     r.quadratic.reserve(a.linear.size() * b.linear.size());
     for (const auto& [v, cv] : a.linear)
