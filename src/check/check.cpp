@@ -2,6 +2,7 @@
 
 #include <cln/float.h>
 
+#include <algorithm>
 #include <new>
 #include <optional>
 
@@ -34,11 +35,38 @@ void name_inconclusive_cause(const Claim& claim, const PolygonContext<T>& contex
 }  // namespace
 
 template <class T>
-ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
+ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evidence evidence) {
   ClaimOutcome out;
   out.info = claim.info;
   try {
     const ClaimSides<T> sides = claim.function<T>()(context);
+    if (sides.instances.empty()) {
+      out.verdict = Verdict::Error;
+      out.error = "the claim produced no comparison";
+      return out;
+    }
+    if (evidence == Evidence::Headline) {
+      // Verdicts only; the text of one comparison, the headline (the first whose verdict is
+      // the claim's), is made at the end: the evidence of the others is never printed.
+      std::vector<Verdict> verdicts;
+      verdicts.reserve(sides.instances.size() + sides.terms.size());
+      Verdict v = Verdict::Holds;
+      for (const auto* group : {&sides.instances, &sides.terms})
+        for (const auto& c : *group) v = combine(v, verdicts.emplace_back(judge_verdict(c)));
+      out.verdict = v;
+      const auto first = std::find(verdicts.begin(), verdicts.end(), v) - verdicts.begin();
+      const size_t k = first == static_cast<std::ptrdiff_t>(verdicts.size()) ? 0 : static_cast<size_t>(first);
+      const Comparison<T>* headline =
+          k < sides.instances.size() ? &sides.instances[k] : &sides.terms[k - sides.instances.size()];
+      out.headline = judge(*headline);
+      if constexpr (!ScalarTraits<T>::is_exact) {
+        out.instances.push_back(out.headline);
+        name_inconclusive_cause(claim, context, out);
+        out.headline = std::move(out.instances.front());
+        out.instances.clear();
+      }
+      return out;
+    }
     Verdict v = Verdict::Holds;
     for (const auto& c : sides.instances) {
       out.instances.push_back(judge(c));
@@ -50,11 +78,6 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
     }
     out.verdict = v;
     if constexpr (!ScalarTraits<T>::is_exact) name_inconclusive_cause(claim, context, out);
-    if (out.instances.empty()) {
-      out.verdict = Verdict::Error;
-      out.error = "the claim produced no comparison";
-      return out;
-    }
     out.headline = out.instances.front();
     for (const auto& group : {&out.instances, &out.terms}) {
       bool found = false;
@@ -85,13 +108,13 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context) {
   return out;
 }
 
-template ClaimOutcome run_claim<Rational>(const Claim&, const PolygonContext<Rational>&);
-template ClaimOutcome run_claim<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&);
-template ClaimOutcome run_claim<Tracked<long double>>(const Claim&, const PolygonContext<Tracked<long double>>&);
-template ClaimOutcome run_claim<Tracked<MpFloat<30>>>(const Claim&, const PolygonContext<Tracked<MpFloat<30>>>&);
-template ClaimOutcome run_claim<Tracked<MpFloat<50>>>(const Claim&, const PolygonContext<Tracked<MpFloat<50>>>&);
-template ClaimOutcome run_claim<Tracked<MpFloat<100>>>(const Claim&, const PolygonContext<Tracked<MpFloat<100>>>&);
-template ClaimOutcome run_claim<Tracked<MpFloat<1000>>>(const Claim&, const PolygonContext<Tracked<MpFloat<1000>>>&);
+template ClaimOutcome run_claim<Rational>(const Claim&, const PolygonContext<Rational>&, Evidence);
+template ClaimOutcome run_claim<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&, Evidence);
+template ClaimOutcome run_claim<Tracked<long double>>(const Claim&, const PolygonContext<Tracked<long double>>&, Evidence);
+template ClaimOutcome run_claim<Tracked<MpFloat<30>>>(const Claim&, const PolygonContext<Tracked<MpFloat<30>>>&, Evidence);
+template ClaimOutcome run_claim<Tracked<MpFloat<50>>>(const Claim&, const PolygonContext<Tracked<MpFloat<50>>>&, Evidence);
+template ClaimOutcome run_claim<Tracked<MpFloat<100>>>(const Claim&, const PolygonContext<Tracked<MpFloat<100>>>&, Evidence);
+template ClaimOutcome run_claim<Tracked<MpFloat<1000>>>(const Claim&, const PolygonContext<Tracked<MpFloat<1000>>>&, Evidence);
 
 namespace {
 
@@ -116,7 +139,8 @@ void mark_out_of_range(PolygonCheck& r, const std::vector<Claim>& catalogue, con
 }  // namespace
 
 PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
-                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a) {
+                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a,
+                           Evidence evidence) {
   PolygonCheck r;
   r.scene = scene;
   r.arithmetic = a;
@@ -148,7 +172,7 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
         r.not_applicable.push_back(claim.info.id);
         continue;
       }
-      r.claims.push_back(run_claim(claim, ctx));
+      r.claims.push_back(run_claim(claim, ctx, evidence));
     }
     return 0;
   });

@@ -111,6 +111,37 @@ std::string short_text(const Radius& e) {
   }
 }
 
+/// How a floating-point comparison ends (the rule of judge.h), without any text.
+enum class TrackedCase { NonFinite, Unbounded, Fails, TooWide, Holds };
+
+template <class F>
+F judge_scale(const Tracked<F>& l, const Tracked<F>& r, double extra) {
+  using Ops = JudgeOps<F>;
+  using TT = TrackedTraits<F>;
+  F scale = TT::abs(l.v);
+  for (const F& x : {TT::abs(r.v), Ops::from_double(std::abs(extra))})
+    if (ScalarTraits<F>::less(scale, x)) scale = x;
+  return scale;
+}
+
+template <class F>
+TrackedCase decide_tracked(const Tracked<F>& l, const Tracked<F>& r, const Tracked<F>& res, const F& scale) {
+  using Ops = JudgeOps<F>;
+  if (Ops::any_non_finite(l.v, r.v, res.v)) return TrackedCase::NonFinite;
+  if (TrackedTraits<F>::is_unbounded(res.e)) return TrackedCase::Unbounded;
+  if (Ops::magnitude_exceeds(res.v, res.e)) return TrackedCase::Fails;
+  if (Ops::radius_exceeds(res.e, Ops::sqrt_u_times(scale))) return TrackedCase::TooWide;
+  return TrackedCase::Holds;
+}
+
+Verdict verdict_of(TrackedCase k) {
+  switch (k) {
+    case TrackedCase::Fails: return Verdict::Fails;
+    case TrackedCase::Holds: return Verdict::Holds;
+    default: return Verdict::Inconclusive;
+  }
+}
+
 template <class F>
 ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
   using Ops = JudgeOps<F>;
@@ -125,9 +156,7 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
   out.rhs = ScalarTraits<F>::to_string(r.v);
   out.residual = ScalarTraits<F>::to_string(res.v);
   out.tolerance = Ops::radius_text(res.e);
-  F scale = TT::abs(l.v);
-  for (const F& x : {TT::abs(r.v), Ops::from_double(std::abs(c.scale))})
-    if (ScalarTraits<F>::less(scale, x)) scale = x;
+  const F scale = judge_scale(l, r, c.scale);
   out.relative_error_bound = Ops::relative(res.e, scale);
   const double cond_l = Ops::condition(l), cond_r = Ops::condition(r);
   out.tolerance_derivation = fmt::format(
@@ -147,23 +176,23 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
         out.inconclusive_side == "both" ? "both sides' bounds are as wide" : "its error bound is the wider one",
         std::max(rel_l, rel_r), std::min(rel_l, rel_r));
   };
-  if (Ops::any_non_finite(l.v, r.v, res.v)) {
-    out.verdict = Verdict::Inconclusive;
-    out.reason = "a side overflowed or is not a number in this precision";
-    set_trust();
-  } else if (TT::is_unbounded(res.e)) {
-    out.verdict = Verdict::Inconclusive;
-    out.reason = "the error bound is unbounded: a divisor is not distinguishable from zero in this precision";
-    set_trust();
-  } else if (Ops::magnitude_exceeds(res.v, res.e)) {
-    out.verdict = Verdict::Fails;
-  } else if (Ops::radius_exceeds(res.e, Ops::sqrt_u_times(scale))) {
-    out.verdict = Verdict::Inconclusive;
-    out.reason = fmt::format("agreement within the error bound, but the bound is {:.3g} relative: too wide to confirm",
-                             out.relative_error_bound);
-    set_trust();
-  } else {
-    out.verdict = Verdict::Holds;
+  const TrackedCase k = decide_tracked(l, r, res, scale);
+  out.verdict = verdict_of(k);
+  switch (k) {
+    case TrackedCase::NonFinite:
+      out.reason = "a side overflowed or is not a number in this precision";
+      set_trust();
+      break;
+    case TrackedCase::Unbounded:
+      out.reason = "the error bound is unbounded: a divisor is not distinguishable from zero in this precision";
+      set_trust();
+      break;
+    case TrackedCase::TooWide:
+      out.reason = fmt::format("agreement within the error bound, but the bound is {:.3g} relative: too wide to confirm",
+                               out.relative_error_bound);
+      set_trust();
+      break;
+    default: break;
   }
   return out;
 }
@@ -176,6 +205,18 @@ ComparisonOutcome judge(const Comparison<T>& c) {
     return judge_exact(c);
   } else {
     return judge_tracked(c);
+  }
+}
+
+template <class T>
+Verdict judge_verdict(const Comparison<T>& c) {
+  if (!c.lhs.has_value() || !c.rhs.has_value()) return Verdict::Undefined;
+  if constexpr (ScalarTraits<T>::is_exact) {
+    return cln::zerop(c.lhs.get() - c.rhs.get()) ? Verdict::Holds : Verdict::Fails;
+  } else {
+    const auto& l = c.lhs.get();
+    const auto& r = c.rhs.get();
+    return verdict_of(decide_tracked(l, r, l - r, judge_scale(l, r, c.scale)));
   }
 }
 
@@ -220,6 +261,13 @@ template ComparisonOutcome judge<Tracked<MpFloat<30>>>(const Comparison<Tracked<
 template ComparisonOutcome judge<Tracked<MpFloat<50>>>(const Comparison<Tracked<MpFloat<50>>>&);
 template ComparisonOutcome judge<Tracked<MpFloat<100>>>(const Comparison<Tracked<MpFloat<100>>>&);
 template ComparisonOutcome judge<Tracked<MpFloat<1000>>>(const Comparison<Tracked<MpFloat<1000>>>&);
+template Verdict judge_verdict<Rational>(const Comparison<Rational>&);
+template Verdict judge_verdict<Tracked<double>>(const Comparison<Tracked<double>>&);
+template Verdict judge_verdict<Tracked<long double>>(const Comparison<Tracked<long double>>&);
+template Verdict judge_verdict<Tracked<MpFloat<30>>>(const Comparison<Tracked<MpFloat<30>>>&);
+template Verdict judge_verdict<Tracked<MpFloat<50>>>(const Comparison<Tracked<MpFloat<50>>>&);
+template Verdict judge_verdict<Tracked<MpFloat<100>>>(const Comparison<Tracked<MpFloat<100>>>&);
+template Verdict judge_verdict<Tracked<MpFloat<1000>>>(const Comparison<Tracked<MpFloat<1000>>>&);
 template std::string tolerance_rule<Rational>();
 template std::string tolerance_rule<Tracked<double>>();
 template std::string tolerance_rule<Tracked<long double>>();

@@ -36,7 +36,7 @@ SweepCase run_sweep_case(GroundTruthEngine& engine, const std::vector<Claim>& ca
   c.k = k;
   c.polygon = generate_random_polygon(o.seed, n, index);
   const PolygonCheck check = check_polygon(engine, catalogue, fmt::format("random-n{}-i{}", n, index),
-                                           c.polygon.polygon, c.polygon.rates, o.arithmetic);
+                                           c.polygon.polygon, c.polygon.rates, o.arithmetic, Evidence::Headline);
   c.not_applicable = check.not_applicable;
   for (const ClaimOutcome& outcome : check.claims) {
     c.verdicts[outcome.info.id] = outcome.verdict;

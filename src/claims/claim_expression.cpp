@@ -13,6 +13,7 @@
 
 #include "linkproof/claims/vocabulary.h"
 #include "linkproof/core/error.h"
+#include "linkproof/symbolic/canonical_order.h"
 
 namespace GiNaC {
 // A call of a vocabulary word: lp_word1(code, a) and lp_word2(code, a, b). GiNaC leaves them
@@ -419,42 +420,21 @@ int code_of_symbol(const GiNaC::ex& e) {
   return -1;
 }
 
-namespace {
-
-/// A text of e that does not depend on GiNaC's order of operands: sums and products list their
-/// operands' keys sorted.
-std::string canonical_key(const GiNaC::ex& e) {
-  using namespace GiNaC;
-  if (is_exactly_a<add>(e) || is_exactly_a<mul>(e)) {
-    std::vector<std::string> keys;
-    for (size_t i = 0; i < e.nops(); ++i) keys.push_back(canonical_key(e.op(i)));
-    std::sort(keys.begin(), keys.end());
-    std::string k = is_exactly_a<add>(e) ? "+(" : "*(";
-    for (const auto& x : keys) k += x + ",";
-    return k + ")";
-  }
-  if (e.nops() == 0) {
-    std::ostringstream o;
-    o << e;
-    return o.str();
-  }
-  std::string k = is_exactly_a<power>(e) ? "^(" : std::string(ex_to<basic>(e).class_name()) + "(";
-  for (size_t i = 0; i < e.nops(); ++i) k += canonical_key(e.op(i)) + ",";
-  return k + ")";
-}
-
-}  // namespace
-
 const std::vector<size_t>& canonical_order(const GiNaC::ex& e) {
   // Claim expressions are few and small: one cached order per distinct node, on the one thread
   // that uses GiNaC.
   static std::unordered_map<GiNaC::ex, std::vector<size_t>, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> cache;
+  // Sorted by the full canonical text (not CanonicalOrder::order's hashed keys): the order of
+  // evaluation decides which undefined quantity a report names first, so it stays the order
+  // claims have always been evaluated in. Ties (equal texts) keep the operand index.
   const auto it = cache.find(e);
   if (it != cache.end()) return it->second;
   std::vector<std::pair<std::string, size_t>> keyed;
-  for (size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(canonical_key(e.op(i)), i);
+  keyed.reserve(e.nops());
+  for (size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(CanonicalOrder::text(e.op(i)), i);
   std::sort(keyed.begin(), keyed.end());
   std::vector<size_t> order;
+  order.reserve(keyed.size());
   for (const auto& k : keyed) order.push_back(k.second);
   return cache.emplace(e, std::move(order)).first->second;
 }

@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "ex_text.h"
+#include "linkproof/symbolic/canonical_order.h"
 
 namespace linkproof {
 
@@ -56,15 +57,17 @@ class TapeCompiler {
       if (it == input_index_.end()) throw InternalError("tape: symbol " + ex_text(e) + " is not an input");
       return emit({Tape::Op::Input, it->second, 0, 0});
     }
+    // Operands in canonical order (canonical_order.h): GiNaC's own order depends on addresses,
+    // and a floating-point sum or product evaluated in it would round differently in every run.
     if (is_a<add>(e)) {
       std::vector<std::uint32_t> args;
-      for (size_t i = 0; i < e.nops(); ++i) args.push_back(compile(e.op(i)));
+      for (size_t i : order_.order(e)) args.push_back(compile(e.op(i)));
       return emit_nary(Tape::Op::Sum, args);
     }
     if (is_a<mul>(e)) {
       // One quotient per product: numerator factors over the product of the negative powers.
       std::vector<std::uint32_t> num, den;
-      for (size_t i = 0; i < e.nops(); ++i) {
+      for (size_t i : order_.order(e)) {
         const ex& f = e.op(i);
         if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer() &&
             ex_to<numeric>(f.op(1)).is_negative())
@@ -90,6 +93,7 @@ class TapeCompiler {
   }
 
   Tape& tape_;
+  CanonicalOrder order_;
   std::unordered_map<ex, std::uint32_t, ExHash, ex_is_equal> memo_;
   std::unordered_map<ex, std::uint32_t, ExHash, ex_is_equal> input_index_;
 };

@@ -70,6 +70,43 @@ TEST(GroundTruth, TermCoefficientsMatchSpecA4Structure) {
   }
 }
 
+TEST(GroundTruth, ForwardModeTermsEqualTheSymbolicDerivativesOnRandomPolygons) {
+  // Two routes to the same coefficients: the motion tape evaluated over rate jets (what checks
+  // use) and the solution differentiated symbolically in GiNaC and compiled (coefficient_tape).
+  const std::uint64_t seed = 20261124;
+  GroundTruthEngine engine;
+  for (int n = 4; n <= 9; ++n) {
+    for (int i = 0; i < 6; ++i) {
+      const auto rc = generate_random_polygon(seed, n, i);
+      const auto jets = engine.terms(rc.polygon);
+      const auto [out, cpl] = engine.coefficients_by_symbolic_derivatives(rc.polygon);
+      const std::string where = "seed " + std::to_string(seed) + " n " + std::to_string(n) + " index " + std::to_string(i);
+      for (const auto& [a, b] : {std::pair(&jets.out, &out), std::pair(&jets.cpl, &cpl)}) {
+        EXPECT_EQ(a->omega_dot, b->omega_dot) << where;
+        EXPECT_EQ(a->omega_sq, b->omega_sq) << where;
+        EXPECT_EQ(a->omega_pair, b->omega_pair) << where;
+      }
+      // Velocity: the motion for a unit input j.
+      for (int j = 1; j <= n - 3; ++j) {
+        InputRates<Rational> unit{std::vector<Rational>(static_cast<size_t>(n - 3), 0),
+                                  std::vector<Rational>(static_cast<size_t>(n - 3), 0)};
+        unit.omega[static_cast<size_t>(j - 1)] = 1;
+        const auto m = engine.motion(rc.polygon, unit);
+        EXPECT_EQ(jets.velocity_out[static_cast<size_t>(j - 1)], m.omega[static_cast<size_t>(n - 2)]) << where;
+        EXPECT_EQ(jets.velocity_cpl[static_cast<size_t>(j - 1)], m.omega[static_cast<size_t>(n - 3)]) << where;
+      }
+    }
+  }
+}
+
+TEST(GroundTruth, ForwardModeTermsAreUndefinedAtTheDeadCentre) {
+  // r_{n-2} parallel to r_{n-1}: D = 0.
+  const Polygon<Rational> p({{0, 0}, {0, 3}, {1, 5}, {2, 4}, {4, 4}, {6, 4}});
+  ASSERT_TRUE(cln::zerop(p.dead_centre_determinant()));
+  GroundTruthEngine engine;
+  EXPECT_THROW(engine.terms(p), UndefinedQuantity);
+}
+
 TEST(GroundTruth, SymbolicSolutionEqualsClosedFormIdenticallyForN4To6) {
   // Zero test of (engine - closed form) as a rational function in generic x_j, y_j, omega_j,
   // omega_dot_j: numerator of the normal form is 0.

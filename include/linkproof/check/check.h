@@ -20,13 +20,20 @@
 
 namespace linkproof {
 
+/// What a check keeps of each comparison. Verdicts never depend on it.
+enum class Evidence {
+  All,       ///< every comparison with its evidence as text (lhs, rhs, residual, tolerance): reports
+  Headline,  ///< each claim's verdict and its headline comparison only; instances and terms stay
+             ///< empty (sweeps: the text of the other comparisons is never printed)
+};
+
 struct ClaimOutcome {
   ClaimInfo info;
   Verdict verdict = Verdict::Error;
   /// The comparison shown in summaries: the first whose verdict is the claim's verdict.
   ComparisonOutcome headline;
-  std::vector<ComparisonOutcome> instances;
-  std::vector<ComparisonOutcome> terms;
+  std::vector<ComparisonOutcome> instances;  ///< empty with Evidence::Headline
+  std::vector<ComparisonOutcome> terms;      ///< empty with Evidence::Headline
   std::string error;  ///< set when the evaluation itself threw (verdict Error)
 
   /// True if this outcome is what the claim is expected to do, or says nothing against it
@@ -64,13 +71,15 @@ struct PolygonCheck {
 
 /// Evaluates every applicable claim of `catalogue` on the polygon in arithmetic `a`.
 /// Never throws for a valid polygon (see polygon_input_problem): a claim whose evaluation
-/// throws gets the verdict Error with the message.
+/// throws gets the verdict Error with the message. Cost O(n^2) operations in the arithmetic
+/// (the Theta(n^2) pair terms), plus the text of the evidence kept.
 PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
-                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a);
+                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a,
+                           Evidence evidence = Evidence::All);
 
 /// Runs one claim in scalar type T on a prepared context.
 template <class T>
-ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context);
+ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evidence evidence = Evidence::All);
 
 /// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
 /// claim's evaluation errored.

@@ -49,4 +49,8 @@ std::string tolerance_rule();
 template <class T>
 ComparisonOutcome judge(const Comparison<T>& c);
 
+/// judge(c).verdict, without making any text (for comparisons whose evidence nobody prints).
+template <class T>
+Verdict judge_verdict(const Comparison<T>& c);
+
 }  // namespace linkproof

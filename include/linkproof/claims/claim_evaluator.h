@@ -151,24 +151,69 @@ class ClaimEvaluator {
     return Value::number(a.s * b.s);
   }
 
+  /// What index() needs of one index expression at this n, worked out once per (word, argument):
+  /// an index expression is read by GiNaC (has, subs) only the first time, not once per term of
+  /// a sum over pairs.
+  struct IndexForm {
+    bool uses_j = false, uses_l = false;
+    bool affine = false;  ///< the index is c0 + cj j + cl l with integers c0, cj, cl
+    int c0 = 0, cj = 0, cl = 0;
+    bool noted = false;   ///< its locality note (if any) has been made
+  };
+
+  static const GiNaC::symbol& index_symbol(const char* name) {
+    return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
+  }
+
+  IndexForm index_form(const GiNaC::ex& arg) const {
+    using namespace GiNaC;
+    const symbol &n = index_symbol("n"), &j = index_symbol("j"), &l = index_symbol("l");
+    IndexForm f;
+    f.uses_j = arg.has(j);
+    f.uses_l = arg.has(l);
+    const ex v = arg.subs(n == c_.n);
+    if (!v.is_polynomial(lst{j, l}) || v.degree(j) > 1 || v.degree(l) > 1) return f;
+    const ex c0 = v.subs(lst{j == 0, l == 0}), cj = v.subs(lst{j == 1, l == 0}) - c0,
+             cl = v.subs(lst{j == 0, l == 1}) - c0;
+    for (const ex* c : {&c0, &cj, &cl})
+      if (!is_exactly_a<numeric>(*c) || !ex_to<numeric>(*c).is_integer()) return f;
+    if (!(v - c0 - cj * j - cl * l).expand().is_zero()) return f;
+    f.affine = true;
+    f.c0 = ex_to<numeric>(c0).to_int();
+    f.cj = ex_to<numeric>(cj).to_int();
+    f.cl = ex_to<numeric>(cl).to_int();
+    return f;
+  }
+
   /// The integer value of an index expression, checked against [1, hi], with locality notes.
   int index(const Word& w, const GiNaC::ex& arg, const IndexBindings& b, bool input_index) {
     using namespace GiNaC;
     const int n = c_.n;
-    const auto& sym = [](const char* name) { return claim_atoms::symbol_of(word_code(*find_word(name, 0))); };
-    const bool uses_j = arg.has(sym("j")), uses_l = arg.has(sym("l"));
-    const ex v = arg.subs(lst{sym("n") == n, sym("j") == b.j, sym("l") == b.l});
-    if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
-      throw error("the index of " + w.name + "[" + text(arg) + "] is not an integer");
-    const int k = ex_to<numeric>(v).to_int();
+    const auto key = std::pair(&w, &ex_to<basic>(arg));  // the claim's expression outlives the evaluator
+    auto it = index_forms_.find(key);
+    if (it == index_forms_.end()) it = index_forms_.emplace(key, index_form(arg)).first;
+    IndexForm& f = it->second;
+    int k;
+    if (f.affine) {
+      k = f.c0 + f.cj * b.j + f.cl * b.l;
+    } else {
+      const ex v = arg.subs(lst{index_symbol("n") == n, index_symbol("j") == b.j, index_symbol("l") == b.l});
+      if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
+        throw error("the index of " + w.name + "[" + text(arg) + "] is not an integer");
+      k = ex_to<numeric>(v).to_int();
+    }
     const int hi = input_index ? n - 3 : n;
     if (k < 1 || k > hi)
       throw error(w.name + "[" + text(arg) + "] = " + w.name + "[" + std::to_string(k) + "] is out of range 1.." +
                   std::to_string(hi) + " at n = " + std::to_string(n));
     // Locality: a bound index alone (j or l) names the input's own side; n, n-1, n-2 name the
-    // sides every coefficient may depend on. Anything else names a particular side.
-    const bool bare_bound = (uses_j || uses_l) && (arg.is_equal(sym("j")) || arg.is_equal(sym("l")));
-    if (uses_j || uses_l) {
+    // sides every coefficient may depend on. Anything else names a particular side. (An index
+    // without j or l has the same value k every time, so one note is all it can make.)
+    if (f.noted) return k;
+    f.noted = true;
+    const bool bare_bound =
+        (f.uses_j || f.uses_l) && (arg.is_equal(index_symbol("j")) || arg.is_equal(index_symbol("l")));
+    if (f.uses_j || f.uses_l) {
       if (!bare_bound) note(w.name + "[" + text(arg) + "]: an index other than j, l, n, n-1, n-2");
       else if (w.name == "K" || w.name == "acc")
         note(w.name + "[" + text(arg) + "]: depends on every side before it");
@@ -190,7 +235,7 @@ class ClaimEvaluator {
       const auto& coef = s == "omega_out" ? vc.first : vc.second;
       RatePoly<T> p;
       for (int j = 1; j <= c_.inputs(); ++j)
-        p = p + constant(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
+        p += constant(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
       return Value::number(p);
     }
     if (s == "omega_dot_out" || s == "omega_dot_cpl") {
@@ -223,13 +268,13 @@ class ClaimEvaluator {
       const auto k = static_cast<size_t>(j - 1);
       const int as = only_j ? only_j : j;
       const auto w = RatePoly<T>::variable({as, RateVariable::Omega});
-      p = p + constant(tc.omega_dot[k]) * RatePoly<T>::variable({as, RateVariable::OmegaDot}) +
-          constant(tc.omega_sq[k]) * w * w;
+      p += constant(tc.omega_dot[k]) * RatePoly<T>::variable({as, RateVariable::OmegaDot});
+      p += constant(tc.omega_sq[k]) * w * w;
     }
     for (int j = 1; j <= m; ++j)
       for (int l = j + 1; l <= m; ++l)
-        p = p + constant(tc.omega_pair[pair_index(j, l, m)]) * RatePoly<T>::variable({j, RateVariable::Omega}) *
-                    RatePoly<T>::variable({l, RateVariable::Omega});
+        p += constant(tc.omega_pair[pair_index(j, l, m)]) * RatePoly<T>::variable({j, RateVariable::Omega}) *
+             RatePoly<T>::variable({l, RateVariable::Omega});
     return p;
   }
 
@@ -295,8 +340,8 @@ class ClaimEvaluator {
       const auto& vc = c_.velocity_coefficients().get();
       RatePoly<T> p;
       for (int j = 1; j <= n - 3; ++j)
-        p = p + constant((out ? vc.first : vc.second)[static_cast<size_t>(j - 1)]) *
-                    RatePoly<T>::variable({j, RateVariable::Omega});
+        p += constant((out ? vc.first : vc.second)[static_cast<size_t>(j - 1)]) *
+             RatePoly<T>::variable({j, RateVariable::Omega});
       return p;
     }
     return acceleration_poly(out ? c_.coefficients().get().first : c_.coefficients().get().second, 0);
@@ -345,7 +390,7 @@ class ClaimEvaluator {
             break;
           }
         }
-        total = total + t;
+        total += t;
       }
       return total;
     }
@@ -365,7 +410,7 @@ class ClaimEvaluator {
             break;
           }
         }
-        total = total + t;
+        total += t;
       }
     return total;
   }
@@ -394,6 +439,7 @@ class ClaimEvaluator {
   std::vector<T> divisors_;
   bool partial_ = false;
   std::map<std::vector<int>, Undefined> undefined_inputs_;
+  std::map<std::pair<const Word*, const GiNaC::basic*>, IndexForm> index_forms_;
 };
 
 }  // namespace linkproof

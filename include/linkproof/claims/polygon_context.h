@@ -66,24 +66,14 @@ class PolygonContext {
   }
   /// Exact term coefficients of omega-dot_{n-1,n} (first) and omega-dot_{n-2,n} (second).
   const Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>& coefficients() const {
-    return cached(coefficients_, [&] { return engine_->coefficients(polygon); });
+    solve_terms();
+    return *coefficients_;
   }
   /// Coefficients of omega_j in the exact omega_{n-1,n} (first) and omega_{n-2,n} (second),
-  /// j = 1..n-3 at [j-1]: the engine's motion for a unit input j.
+  /// j = 1..n-3 at [j-1].
   const Defined<std::pair<std::vector<T>, std::vector<T>>>& velocity_coefficients() const {
-    return cached(velocity_coefficients_, [&] {
-      const T zero = from_int<T>(0), one = from_int<T>(1);
-      std::pair<std::vector<T>, std::vector<T>> v;
-      for (int j = 1; j <= inputs(); ++j) {
-        InputRates<T> unit{std::vector<T>(static_cast<size_t>(inputs()), zero),
-                           std::vector<T>(static_cast<size_t>(inputs()), zero)};
-        unit.omega[static_cast<size_t>(j - 1)] = one;
-        const PolygonMotion<T> m = engine_->motion(polygon, unit);
-        v.first.push_back(m.omega[static_cast<size_t>(n - 2)]);
-        v.second.push_back(m.omega[static_cast<size_t>(n - 3)]);
-      }
-      return v;
-    });
+    solve_terms();
+    return *velocity_coefficients_;
   }
   /// The construction of every four-bar j = 1..n-3 (at [j-1]) under a reading (SPEC A5; the
   /// default is the correct reading).
@@ -136,6 +126,20 @@ class PolygonContext {
   const Defined<V>& cached(std::optional<Defined<V>>& slot, const F& f) const {
     if (!slot) slot = attempt_unless_dead_centre<V>(f);
     return *slot;
+  }
+
+  /// Both coefficient sets from one forward-mode differentiation of the engine's solution
+  /// (GroundTruthEngine::terms, O(n^2)).
+  void solve_terms() const {
+    if (coefficients_) return;
+    const Defined<SolutionTerms<T>> t = attempt_unless_dead_centre<SolutionTerms<T>>([&] { return engine_->terms(polygon); });
+    if (t.has_value()) {
+      coefficients_ = std::pair(t.get().out, t.get().cpl);
+      velocity_coefficients_ = std::pair(t.get().velocity_out, t.get().velocity_cpl);
+    } else {
+      coefficients_ = Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::undefined(t.quantity(), t.reason());
+      velocity_coefficients_ = Defined<std::pair<std::vector<T>, std::vector<T>>>::undefined(t.quantity(), t.reason());
+    }
   }
 
   // Four-bar j shares r_{n-2} and r_{n-1}, hence D, so it is at its dead centre too.

@@ -79,14 +79,18 @@ class RatePoly {
     return sum;
   }
 
-  friend RatePoly operator+(RatePoly a, const RatePoly& b) {
-    for (const auto& [m, c] : b.terms_) a.add(m, c);
-    return a;
+  /// In place: O(terms of b), whatever the size of *this (a sum accumulated term by term with
+  /// `total = total + t` would copy the total every time).
+  RatePoly& operator+=(const RatePoly& b) {
+    for (const auto& [m, c] : b.terms_) add(m, c);
+    return *this;
   }
-  friend RatePoly operator-(RatePoly a, const RatePoly& b) {
-    for (const auto& [m, c] : b.terms_) a.add(m, -c);
-    return a;
+  RatePoly& operator-=(const RatePoly& b) {
+    for (const auto& [m, c] : b.terms_) add(m, -c);
+    return *this;
   }
+  friend RatePoly operator+(RatePoly a, const RatePoly& b) { return std::move(a += b); }
+  friend RatePoly operator-(RatePoly a, const RatePoly& b) { return std::move(a -= b); }
   friend RatePoly operator-(const RatePoly& a) { return RatePoly() - a; }
   friend RatePoly operator*(const RatePoly& a, const RatePoly& b) {
     RatePoly p;

@@ -5,6 +5,10 @@
 // that the size of the tape is the size of the expression's DAG. Evaluating the tape is route
 // (d) "evaluation of the symbolic expression", in exact, tracked or plain floating arithmetic
 // through one code path.
+//
+// The operands of every sum and product are evaluated in a canonical order (canonical_order.h),
+// not in GiNaC's, which depends on addresses: floating-point results and error bounds are the
+// same bytes in every run.
 #pragma once
 
 #include <ginac/ginac.h>

@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""Regenerates the performance table of docs/performance.md (issue 13, "Scale").
+
+Runs build/bench/linkproof_bench once, with a filter built from ROWS and
+--benchmark_format=json, times the SymPy derivation of the same closed omega-dot in the same
+run (python3-sympy), and writes one table row per entry of ROWS: row, goal, measured, and
+whether the goal is met (or missed by how much). Standard library only (SymPy is optional: its
+row says "not measured" without it).
+
+Adding a row is adding an entry to ROWS. A row whose benchmark is absent from the binary (for
+instance the proof, count and mechanism rows before their benchmarks exist) is listed as
+"not measured yet".
+
+    python3 bench/performance_table.py                      # run the benchmarks, rewrite the doc
+    python3 bench/performance_table.py --json results.json  # use a saved benchmark run
+"""
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+# One entry per table row.
+#   row      what is measured, as the table shows it
+#   bench    regular expression matched against the benchmark's full name (the first match is used)
+#   goal     ("max_seconds", s): time per iteration at most s
+#            ("min_per_second", r): items per second at least r
+#            ("faster_than", other_bench_regex, factor): at least `factor` times faster than other
+#            ("faster_than_sympy", factor): at least `factor` times faster than the SymPy derivation
+#            None: no goal set yet (the row shows the measurement only)
+#   note     shown beside the goal (the issue's wording)
+ROWS = [
+    {"row": "derivation of the closed omega-dot, n = 24", "bench": r"^BM_SymbolicDerivation/24$",
+     "goal": ("faster_than_sympy", 100), "note": "keep far below SymPy (Cramer, same run)"},
+    {"row": "derivation of the closed omega-dot, n = 1000", "bench": r"^BM_SymbolicDerivation/1000$",
+     "goal": ("max_seconds", 0.020), "note": "<= 20 ms"},
+    {"row": "check, one polygon, every claim, exact, n = 10", "bench": r"^BM_CheckExact/10$", "goal": None},
+    {"row": "check, one polygon, every claim, exact, n = 20", "bench": r"^BM_CheckExact/20$", "goal": None},
+    {"row": "check, one polygon, every claim, exact, n = 40", "bench": r"^BM_CheckExact/40$", "goal": None},
+    {"row": "check, one polygon, every claim, exact, n = 100", "bench": r"^BM_CheckExact/100$",
+     "goal": ("max_seconds", 1.0), "note": "<= 1 s"},
+    {"row": "check, one polygon, every claim, exact, n = 1000", "bench": r"^BM_CheckExact/1000(/|$)",
+     "goal": ("max_seconds", 60.0), "note": "<= 60 s"},
+    {"row": "check, double, n = 10", "bench": r"^BM_CheckDouble/10$",
+     "goal": ("faster_than", r"^BM_CheckExact/10$", 10), "note": ">= 10x faster than exact"},
+    {"row": "check, double, n = 20", "bench": r"^BM_CheckDouble/20$",
+     "goal": ("faster_than", r"^BM_CheckExact/20$", 10), "note": ">= 10x faster than exact"},
+    {"row": "check, double, n = 40", "bench": r"^BM_CheckDouble/40$",
+     "goal": ("faster_than", r"^BM_CheckExact/40$", 10), "note": ">= 10x faster than exact"},
+    {"row": "check, double, n = 100", "bench": r"^BM_CheckDouble/100$",
+     "goal": ("faster_than", r"^BM_CheckExact/100$", 10), "note": ">= 10x faster than exact"},
+    {"row": "check, double, n = 1000", "bench": r"^BM_CheckDouble/1000(/|$)",
+     "goal": ("max_seconds", 5.0), "note": "<= 5 s"},
+    {"row": "random exact pentagons, every claim, one core", "bench": r"^BM_ExactCheckAllClaims/5$",
+     "goal": ("min_per_second", 10000), "note": ">= 10,000/s"},
+    # Rows of the proof, count and mechanism benchmarks (another part of issue 13).
+    {"row": "proofs", "bench": r"^BM_Prove", "goal": None},
+    {"row": "counting", "bench": r"^BM_Count", "goal": None},
+    {"row": "mechanism chains", "bench": r"^BM_MechanismChain", "goal": None},
+]
+
+BEGIN = "<!-- performance-table:begin (bench/performance_table.py writes this part) -->"
+END = "<!-- performance-table:end -->"
+
+UNIT_SECONDS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+
+
+def run_benchmarks(binary):
+    patterns = [r["bench"].lstrip("^").split("(")[0].rstrip("$") for r in ROWS]
+    for r in ROWS:
+        if r["goal"] and r["goal"][0] == "faster_than":
+            patterns.append(r["goal"][1].lstrip("^").split("(")[0].rstrip("$"))
+    bench_filter = "^(" + "|".join(sorted(set(patterns))) + ")"
+    cmd = [binary, "--benchmark_filter=" + bench_filter, "--benchmark_format=json"]
+    print("running:", " ".join(cmd), file=sys.stderr)
+    out = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
+    return json.loads(out)
+
+
+def sympy_derivation_seconds(n=24):
+    """Seconds SymPy takes to derive omega-dot_{n-1,n} of an n-side loop from the twice
+    differentiated closure by Cramer's rule written structurally, without a global simplifier
+    (as BM_SymbolicDerivation/n derives it)."""
+    try:
+        import sympy
+    except ImportError:
+        return None
+    start = time.perf_counter()
+    x = sympy.symbols(f"x1:{n}")
+    y = sympy.symbols(f"y1:{n}")
+    w = sympy.symbols(f"w1:{n}")
+    wd = sympy.symbols(f"wd1:{n}")
+    # d/dt of sum L_j (cos t_j, sin t_j) = 0 with side n fixed: sum w_j (-y_j, x_j) = 0, and again.
+    vel = [sum(-w[j] * y[j] for j in range(n - 1)), sum(w[j] * x[j] for j in range(n - 1))]
+    acc = [sum(-wd[j] * y[j] - w[j] ** 2 * x[j] for j in range(n - 1)),
+           sum(wd[j] * x[j] - w[j] ** 2 * y[j] for j in range(n - 1))]
+    # Cramer's rule on the 2x2 systems in the unknowns of sides n-2 and n-1 (same matrix for
+    # velocity and acceleration); the velocity solution is substituted into the acceleration.
+    u, v, ud, vd = w[n - 3], w[n - 2], wd[n - 3], wd[n - 2]
+    a = [sympy.expand(e).coeff(u) for e in vel]
+    b = [sympy.expand(e).coeff(v) for e in vel]
+    det = a[0] * b[1] - a[1] * b[0]
+    c = [-sympy.expand(e).subs({u: 0, v: 0}) for e in vel]
+    u_sol = (c[0] * b[1] - c[1] * b[0]) / det
+    v_sol = (a[0] * c[1] - a[1] * c[0]) / det
+    ac = [-sympy.expand(e).subs({ud: 0, vd: 0}).subs({u: u_sol, v: v_sol}) for e in acc]
+    vd_sol = (a[0] * ac[1] - a[1] * ac[0]) / det
+    _ = vd_sol
+    return time.perf_counter() - start
+
+
+def find(benchmarks, pattern):
+    rx = re.compile(pattern)
+    for b in benchmarks:
+        if b.get("run_type", "iteration") == "iteration" and rx.search(b["name"]):
+            return b
+    return None
+
+
+def seconds(b):
+    return b["real_time"] * UNIT_SECONDS[b.get("time_unit", "ns")]
+
+
+def fmt_time(s):
+    if s >= 1:
+        return f"{s:.3g} s"
+    if s >= 1e-3:
+        return f"{s * 1e3:.3g} ms"
+    return f"{s * 1e6:.3g} us"
+
+
+def evaluate(row, benchmarks, sympy_s):
+    b = find(benchmarks, row["bench"])
+    if b is None:
+        return "not measured yet", "-"
+    if b.get("error_occurred"):
+        return "error: " + b.get("error_message", ""), "-"
+    t = seconds(b)
+    goal = row["goal"]
+    measured = fmt_time(t)
+    if "items_per_second" in b and goal and goal[0] == "min_per_second":
+        measured = f"{b['items_per_second']:,.0f}/s ({fmt_time(t)} each)"
+    if goal is None:
+        return measured, "no goal set"
+    kind = goal[0]
+    if kind == "max_seconds":
+        return measured, "met" if t <= goal[1] else f"missed: {t / goal[1]:.2g}x the goal"
+    if kind == "min_per_second":
+        rate = b.get("items_per_second", 1 / t)
+        return measured, "met" if rate >= goal[1] else f"missed: {goal[1] / rate:.2g}x too slow"
+    if kind == "faster_than":
+        other = find(benchmarks, goal[1])
+        if other is None:
+            return measured, "reference not measured"
+        ratio = seconds(other) / t
+        measured += f"; {ratio:.3g}x faster than {other['name']}"
+        return measured, "met" if ratio >= goal[2] else f"missed: {ratio:.2g}x, goal {goal[2]}x"
+    if kind == "faster_than_sympy":
+        if sympy_s is None:
+            return measured + "; SymPy not measured", "-"
+        ratio = sympy_s / t
+        measured += f"; SymPy {fmt_time(sympy_s)}, {ratio:,.0f}x"
+        return measured, "met" if ratio >= goal[1] else f"missed: {ratio:.2g}x, goal {goal[1]}x"
+    raise ValueError(f"unknown goal {kind}")
+
+
+def goal_text(row):
+    if row["goal"] is None:
+        return "-"
+    return row.get("note", str(row["goal"]))
+
+
+def table(benchmarks, sympy_s, context):
+    lines = [
+        f"Measured {context.get('date', '?')} on {context.get('host_name', '?')} "
+        f"({context.get('num_cpus', '?')} CPUs, library build {context.get('library_build_type', '?')}), "
+        "one run of `bash bench/make_performance_table.sh`.",
+        "",
+        "| row | benchmark | goal | measured | goal met |",
+        "|---|---|---|---|---|",
+    ]
+    for row in ROWS:
+        measured, verdict = evaluate(row, benchmarks, sympy_s)
+        name = row["bench"].lstrip("^").replace("(/|$)", "").rstrip("$")
+        lines.append(f"| {row['row']} | `{name}` | {goal_text(row)} | {measured} | {verdict} |")
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bench", default="build/bench/linkproof_bench", help="the benchmark binary")
+    ap.add_argument("--json", help="a saved --benchmark_format=json output instead of running")
+    ap.add_argument("--doc", default="docs/performance.md", help="the page whose table is rewritten")
+    ap.add_argument("--no-sympy", action="store_true", help="skip the SymPy timing")
+    args = ap.parse_args()
+
+    data = json.load(open(args.json)) if args.json else run_benchmarks(args.bench)
+    sympy_s = None if args.no_sympy else sympy_derivation_seconds(24)
+    text = table(data.get("benchmarks", []), sympy_s, data.get("context", {}))
+
+    doc = open(args.doc).read() if os.path.exists(args.doc) else f"# Performance\n\n{BEGIN}\n{END}\n"
+    if BEGIN not in doc or END not in doc:
+        sys.exit(f"{args.doc}: the markers {BEGIN!r} and {END!r} are missing")
+    head, rest = doc.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    with open(args.doc, "w") as f:
+        f.write(head + BEGIN + "\n" + text + END + tail)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
