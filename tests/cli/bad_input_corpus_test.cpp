@@ -114,14 +114,14 @@ const std::vector<Case>& corpus() {
        2, "not a time budget", "", ""},
       {"PolygonAboveTheCheckLimit",
        [] {
-         const int n = 51;
+         const int n = 201;
          std::string joints = "[", rates = "[";
          for (int i = 0; i < n; ++i) joints += (i ? ", [" : "[") + std::to_string(i) + ", " + std::to_string(i * i) + "]";
          for (int j = 0; j < n - 3; ++j) rates += (j ? ", " : "") + std::string("1");
          const std::string text = "name: big\npolygon:\n  joints: " + joints + "]\n  omega: " + rates + "]\n  omega_dot: " + rates + "]\n";
-         return std::vector<std::string>{"check", write_temp("n51.yaml", text)};
+         return std::vector<std::string>{"check", write_temp("n201.yaml", text)};
        },
-       2, "at most 50 joints", "", ""},
+       2, "at most 200 joints", "", ""},
       // --- silent acceptance
       {"DuplicateKeyInClaimFile",
        [] {
