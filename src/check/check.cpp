@@ -136,12 +136,31 @@ void mark_out_of_range(PolygonCheck& r, const std::vector<Claim>& catalogue, con
   }
 }
 
+// Only the rates `r.ask` names: an input's is given, the fixed side's is 0, and only sides
+// n-2 and n-1 need the engine's motion (undefined at the dead centre).
+template <class T>
+void fill_asked_rates(PolygonCheck& r, const PolygonContext<T>& ctx) {
+  r.omega.assign(static_cast<std::size_t>(r.n), std::nullopt);
+  r.omega_dot.assign(static_cast<std::size_t>(r.n), std::nullopt);
+  for (const AskedRate& asked : r.ask->rates) {
+    const int j = std::stoi(asked.subject.name);  // validated 1..n by the scene reader
+    auto& slot = (asked.dot ? r.omega_dot : r.omega)[static_cast<std::size_t>(j - 1)];
+    if (j <= ctx.inputs())
+      slot = to_text(asked.dot ? ctx.omega_dot_in(j) : ctx.omega_in(j));
+    else if (j == r.n)
+      slot = "0";
+    else if (ctx.truth().has_value())
+      slot = to_text((asked.dot ? ctx.truth().get().omega_dot : ctx.truth().get().omega)[static_cast<std::size_t>(j - 1)]);
+  }
+}
+
 }  // namespace
 
 PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
                            const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a,
-                           Evidence evidence) {
+                           Evidence evidence, const std::optional<SceneAsk>& ask) {
   PolygonCheck r;
+  if (ask && ask->restricts()) r.ask = ask;
   r.scene = scene;
   r.arithmetic = a;
   r.n = polygon.n();
@@ -162,10 +181,15 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
       return 0;
     }
     const PolygonContext<T>& ctx = *built;
-    if (a != Arithmetic::Exact) r.determinant = to_text(ctx.closed().has_value() ? ctx.closed().get().D : from_int<T>(0));
-    for (int j = 0; j < r.n; ++j) {
-      r.omega.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega[j])) : std::nullopt);
-      r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega_dot[j])) : std::nullopt);
+    if (a != Arithmetic::Exact)
+      r.determinant = to_text(r.dead_centre ? from_int<T>(0) : cross(ctx.r(r.n - 2), ctx.r(r.n - 1)));
+    if (r.ask) {
+      fill_asked_rates(r, ctx);
+    } else {
+      for (int j = 0; j < r.n; ++j) {
+        r.omega.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega[j])) : std::nullopt);
+        r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega_dot[j])) : std::nullopt);
+      }
     }
     for (const Claim& claim : catalogue) {
       if (!claim.info.applies_to(r.n)) {
@@ -174,10 +198,12 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
       }
       r.claims.push_back(run_claim(claim, ctx, evidence));
     }
+    r.computed = {ctx.has_truth(), ctx.has_closed_forms(), !ctx.computed_constructions().empty(),
+                  ctx.has_four_bar_truth()};
     return 0;
   });
   // At the dead centre the inputs are still known; only sides n-2 and n-1 are undefined.
-  if (r.dead_centre) {
+  if (r.dead_centre && !r.ask) {
     for (int j = 0; j < r.n - 3; ++j) {
       r.omega[j] = format_rational(rates.omega[j]);
       r.omega_dot[j] = format_rational(rates.omega_dot[j]);

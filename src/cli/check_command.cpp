@@ -22,17 +22,19 @@ constexpr int kMaxCheckSides = 200;
 
 struct CheckArgs {
   std::string scene;
-  std::string arith = "exact";
+  std::optional<std::string> arith;  // default: the scene's ask, else exact
   bool json = false;
   bool no_terms = false;
   bool strict = false;
 };
 
 // A mechanism scene (top-level `mechanism:`): the mechanism engine and the scene's catalogues.
-int run_mechanism_check(const CheckArgs& a, Arithmetic arith, const std::string& text, std::ostream& out) {
+int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostream& out) {
   const MechanismScene scene = parse_mechanism_scene(text, a.scene);
-  MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), arith);
-  if (scene.curvature.empty() && scene.joint_joining.empty()) return print_report(out, check, a.json, exit_status(check));
+  MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), chosen_arithmetic(a.arith, scene.ask));
+  // With an ask, only what it names (the second-order work is the `curvature` command's then).
+  if ((scene.curvature.empty() && scene.joint_joining.empty()) || check.ask)
+    return print_report(out, check, a.json, exit_status(check));
   // The scene asks for the second-order work (docs/curvature.md): its claims join the check's,
   // its poles, centres and reductions are added to the report.
   const CurvatureCheck second = check_curvature(scene, {});
@@ -50,17 +52,19 @@ int run_mechanism_check(const CheckArgs& a, Arithmetic arith, const std::string&
 }
 
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
-  const Arithmetic arith = arithmetic_or_throw(a.arith);
+  if (a.arith) arithmetic_or_throw(*a.arith);  // a bad option is named before the file is read
   // The file is read once (a pipe such as /dev/stdin can be read only once) and its text parsed.
   const std::string text = read_scene_text(a.scene);
-  if (is_mechanism_scene_text(text)) return run_mechanism_check(a, arith, text, out);
+  if (is_mechanism_scene_text(text)) return run_mechanism_check(a, text, out);
   const PolygonScene scene = parse_polygon_scene(text, a.scene);
   if (scene.polygon.n() > kMaxCheckSides)
     throw InputError(a.scene, "polygon.joints",
                      "check accepts at most " + std::to_string(kMaxCheckSides) + " joints (as sweep --n; "
                      "docs/limits.md), got " + std::to_string(scene.polygon.n()));
   GroundTruthEngine engine;
-  PolygonCheck check = check_polygon(engine, dijksman1966::catalogue(), scene.name, scene.polygon, scene.rates, arith);
+  PolygonCheck check = check_polygon(engine, asked_claims(dijksman1966::catalogue(), scene.ask, a.scene), scene.name,
+                                     scene.polygon, scene.rates, chosen_arithmetic(a.arith, scene.ask), Evidence::All,
+                                     scene.ask);
   check.strict = a.strict;
   if (a.json)
     out << json_text(to_json(check)) << "\n";
@@ -78,7 +82,7 @@ void add_check_command(CLI::App& app, Action& action) {
   c->add_option("--arith", a.arith,
                 "arithmetic: exact (default: CLN rationals, a residual is 0 or not), or floating point with a "
                 "running error bound that draws the tolerance: double, long-double, mp30, mp50, mp100, mp1000 "
-                "(CLN long floats of 128, 192, 384, 3392 bits)");
+                "(CLN long floats of 128, 192, 384, 3392 bits); default: the scene's `ask: [arithmetic: ...]`, else exact");
   c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
   c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
   c->add_flag("--strict", a.strict,

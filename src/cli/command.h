@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "linkproof/check/arithmetic.h"
+#include "linkproof/check/ask.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/io/claim_file.h"
 
@@ -47,6 +48,9 @@ int print_report(std::ostream& out, const Report& report, bool json, int status)
 
 /// "--arith" parsed, or an InputError naming the option.
 Arithmetic arithmetic_or_throw(const std::string& s);
+/// The arithmetic of a scene's check: --arith when given (it takes precedence), else the
+/// scene's `ask: [arithmetic: ...]`, else exact.
+Arithmetic chosen_arithmetic(const std::optional<std::string>& option, const std::optional<SceneAsk>& ask);
 
 /// "N" or "A..B" with lo <= A <= B <= hi, or an InputError naming `option`.
 std::pair<int, int> parse_n_range(const std::string& s, const std::string& option, int lo, int hi);

@@ -15,6 +15,12 @@ Arithmetic arithmetic_or_throw(const std::string& s) {
   return *a;
 }
 
+Arithmetic chosen_arithmetic(const std::optional<std::string>& option, const std::optional<SceneAsk>& ask) {
+  if (option) return arithmetic_or_throw(*option);
+  if (ask && ask->arithmetic) return *ask->arithmetic;
+  return Arithmetic::Exact;
+}
+
 std::pair<int, int> parse_n_range(const std::string& s, const std::string& option, int lo, int hi) {
   const auto bad = [&] {
     return InputError("<command line>", option,

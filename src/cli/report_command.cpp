@@ -38,7 +38,7 @@ struct ReportArgs {
   std::vector<std::string> claims;
   std::optional<int> n;
   double ladder_seconds = 1.0;
-  std::string arith = "exact";
+  std::optional<std::string> arith;  // polygon scenes; default: the scene's ask, else exact
   bool numerics = false;
   bool plans = false;
   std::string katex = "/usr/share/javascript/katex";
@@ -51,7 +51,7 @@ std::string command_line(const ReportArgs& a) {
   for (const auto& id : a.claims) c += " --claim " + id;
   if (a.n) c += " --n " + std::to_string(*a.n);
   if (a.ladder_seconds != 1.0) c += fmt::format(" --ladder-seconds {}", a.ladder_seconds);
-  if (a.arith != "exact") c += " --arith " + a.arith;
+  if (a.arith) c += " --arith " + *a.arith;
   if (a.numerics) c += " --numerics";
   if (a.plans) c += " --plans";
   return c;
@@ -123,11 +123,12 @@ int report_mechanism(const ReportArgs& a, const std::string& text, std::ostream&
 }
 
 int report_polygon(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
-  const Arithmetic arith = arithmetic_or_throw(a.arith);
+  if (a.arith) arithmetic_or_throw(*a.arith);
   const PolygonScene scene = parse_polygon_scene(text, a.input);
   GroundTruthEngine engine;
-  const auto& catalogue = dijksman1966::catalogue();
-  const PolygonCheck check = check_polygon(engine, catalogue, scene.name, scene.polygon, scene.rates, arith);
+  const std::vector<Claim> catalogue = asked_claims(dijksman1966::catalogue(), scene.ask, a.input);
+  const PolygonCheck check = check_polygon(engine, catalogue, scene.name, scene.polygon, scene.rates,
+                                           chosen_arithmetic(a.arith, scene.ask), Evidence::All, scene.ask);
   report::Document d = report::build_polygon_document(engine, catalogue, scene, check, {a.numerics, text});
   d.reproduce = reproduce_of(a, "none (deterministic)");
   report::add_reproduce_section(d);
@@ -161,7 +162,8 @@ void add_report_command(CLI::App& app, Action& action) {
   r->add_option("--claim", a.claims, "claim files: the claim to prove (repeatable; default every claim), e.g. eq22");
   r->add_option("--n", a.n, "claim files: prove for this number of sides only");
   r->add_option("--ladder-seconds", a.ladder_seconds, "claim files: time for per-n proofs per claim (default 1)");
-  r->add_option("--arith", a.arith, "polygon scenes: the arithmetic of the check (default exact)");
+  r->add_option("--arith", a.arith,
+                "polygon scenes: the arithmetic of the check (default: the scene's `ask: [arithmetic: ...]`, else exact)");
   r->add_flag("--numerics", a.numerics, "polygon scenes: add the numerics section (every floating-point arithmetic)");
   r->add_flag("--plans", a.plans, "mechanism scenes: add the velocity and acceleration plans");
   r->add_option("--katex", a.katex, "directory of KaTeX (default Debian's /usr/share/javascript/katex)");

@@ -1,6 +1,7 @@
 #include "linkproof/io/mechanism_scene.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/mechanism/joint_joining.h"
+#include "scene_ask.h"
 #include "yaml_document.h"
 
 namespace linkproof {
@@ -49,7 +51,7 @@ class MechanismReader {
     if (!doc["mechanism"] && doc["polygon"])
       fail("mechanism", "expected a mechanism scene (a top-level `mechanism:` key), got a polygon scene (checked by "
                         "`linkproof check`)");
-    check_keys(doc, "", {"name", "description", "mechanism", "curvature", "joint_joining"});
+    check_keys(doc, "", {"name", "description", "mechanism", "curvature", "joint_joining", "ask"});
     MechanismScene scene;
     scene.source = source_;
     const YAML::Node name = doc["name"];
@@ -95,7 +97,27 @@ class MechanismReader {
         scene.catalogues.push_back(clean_text(e.Scalar()));
       }
     }
+    if (const YAML::Node a = doc["ask"]) scene.ask = read_ask(a, scene);
     return scene;
+  }
+
+  // The mechanism's ask: rates and `links` name links, `points` name joints or tracer points.
+  SceneAsk read_ask(const YAML::Node& node, const MechanismScene& scene) const {
+    SceneAsk ask = read_scene_ask(node, source_);
+    const Linkage& g = scene.linkage;
+    const auto known_link = [&](const AskedName& n, const std::string& what) {
+      if (!g.find_link(n.name))
+        fail(n.field, fmt::format("{}: no link {} in this mechanism (links: {})", what, backticked(n.name),
+                                  fmt::join(g.link_names(), ", ")));
+    };
+    for (const AskedRate& r : ask.rates) known_link(r.subject, r.text());
+    for (const AskedName& n : ask.links) known_link(n, "links");
+    for (const AskedName& n : ask.points) {
+      const bool point = std::any_of(scene.points.begin(), scene.points.end(), [&](const auto& p) { return p.name == n.name; });
+      if (!point && !g.find_joint(n.name))
+        fail(n.field, "points: no joint or tracer point " + backticked(n.name) + " in this mechanism");
+    }
+    return ask;
   }
 
  private:

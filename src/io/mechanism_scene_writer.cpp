@@ -3,6 +3,7 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
+#include "scene_ask.h"
 #include "yaml_document.h"
 
 namespace linkproof {
@@ -94,7 +95,9 @@ std::string mechanism_scene_to_yaml(const MechanismScene& scene) {
     for (const auto& c : scene.catalogues) out << c;
     out << YAML::EndSeq;
   }
-  out << YAML::EndMap << YAML::EndMap;
+  out << YAML::EndMap;
+  if (scene.ask) yaml_io::emit_ask(out, *scene.ask);
+  out << YAML::EndMap;
   LINKPROOF_ASSERT(out.good(), "YAML emitter failed: " + out.GetLastError());
   return std::string(out.c_str()) + "\n";
 }

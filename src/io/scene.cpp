@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "linkproof/core/error.h"
+#include "scene_ask.h"
 #include "yaml_document.h"
 
 namespace linkproof {
@@ -43,7 +44,7 @@ class SceneReader {
     if (!doc.IsMap())
       fail("", "expected a map with the fields `name` and `polygon` at the top level, got " +
                    kind_of(doc));
-    const auto top = fields(doc, "", {"name", "description", "polygon"},
+    const auto top = fields(doc, "", {"name", "description", "polygon", "ask"},
                             {"mechanism", "this is a mechanism scene (top-level `mechanism`), and a polygon scene (`name`, `polygon`) is "
                                           "expected here; `linkproof check SCENE` reads both kinds"});
 
@@ -67,6 +68,7 @@ class SceneReader {
 
     if (std::string problem = polygon_input_problem(scene.polygon); !problem.empty())
       fail("polygon.joints", problem);
+    if (auto a = find(top, "ask")) scene.ask = read_ask(*a, n);
     return scene;
   }
 
@@ -184,6 +186,30 @@ class SceneReader {
     return out;
   }
 
+  // The polygon's ask: rates of sides 1..n; links and points belong to mechanism scenes.
+  SceneAsk read_ask(const YAML::Node& node, int n) const {
+    SceneAsk ask = read_scene_ask(node, source_);
+    for (const AskedRate& r : ask.rates) {
+      const std::string& s = r.subject.name;
+      const bool digits = !s.empty() && s.size() <= 6 && std::all_of(s.begin(), s.end(), [](unsigned char c) {
+        return std::isdigit(c);
+      });
+      const int side = digits ? std::stoi(s) : 0;
+      if (side < 1 || side > n)
+        fail(r.subject.field, fmt::format("{}: expected a side 1..{} of this polygon (relative to side {}), got {}",
+                                          r.text(), n, n, backticked(shorten(s, kMaxQuoted))));
+    }
+    const auto refuse = [&](const std::vector<AskedName>& names, const char* key) {
+      if (!names.empty())
+        fail(names.front().field, fmt::format("`{}` belongs to mechanism scenes; a polygon scene asks for omega(j), "
+                                              "omega_dot(j), claims and arithmetic",
+                                              key));
+    };
+    refuse(ask.links, "links");
+    refuse(ask.points, "points");
+    return ask;
+  }
+
   std::string source_;
 };
 
@@ -227,7 +253,9 @@ std::string polygon_scene_to_yaml(const PolygonScene& scene) {
   emit_list(out, scene.rates.omega);
   out << YAML::Key << "omega_dot" << YAML::Value;
   emit_list(out, scene.rates.omega_dot);
-  out << YAML::EndMap << YAML::EndMap;
+  out << YAML::EndMap;
+  if (scene.ask) emit_ask(out, *scene.ask);
+  out << YAML::EndMap;
   LINKPROOF_ASSERT(out.good(), "YAML emitter failed: " + out.GetLastError());
   return std::string(out.c_str()) + "\n";
 }

@@ -11,6 +11,7 @@
 
 #include "linkproof/mechanism/mechanism_vector_route.h"
 #include "linkproof/mechanism/mechanism_closure.h"
+#include "linkproof/mechanism/sub_mechanism.h"
 
 namespace linkproof {
 
@@ -192,8 +193,11 @@ std::vector<MechanismClaim> builtin_mechanism_claims() {
   return out;
 }
 
-MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<MechanismCatalogue>& catalogues,
-                               Arithmetic a) {
+namespace {
+
+// The whole check of `s` with `claims` and the tables of `table_catalogues`.
+MechanismCheck check_solved(const MechanismScene& s, const std::vector<MechanismClaim>& claims,
+                            const std::vector<const MechanismCatalogue*>& table_catalogues, Arithmetic a) {
   const Linkage& g = s.linkage;
   MechanismCheck r;
   r.scene = s.name;
@@ -244,17 +248,84 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
     });
   }
   const MechanismContext ctx{s, truth};
-  std::vector<MechanismClaim> all = builtin_mechanism_claims();
-  for (const MechanismCatalogue& cat : catalogues) {
-    all.insert(all.end(), cat.claims.begin(), cat.claims.end());
-    if (!cat.tables) continue;
+  for (const MechanismCatalogue* cat : table_catalogues) {
+    if (!cat->tables) continue;
     try {
-      for (auto& t : cat.tables(ctx)) r.tables.push_back(std::move(t));
+      for (auto& t : cat->tables(ctx)) r.tables.push_back(std::move(t));
     } catch (const UndefinedQuantity& u) {  // e.g. a four-bar at its dead centre
-      r.tables.push_back(ReportTable{cat.name, {{"undefined", u.quantity() + ": " + u.reason()}}});
+      r.tables.push_back(ReportTable{cat->name, {{"undefined", u.quantity() + ": " + u.reason()}}});
     }
   }
-  run_mechanism_claims(all, ctx, r.claims, r.not_applicable);
+  run_mechanism_claims(claims, ctx, r.claims, r.not_applicable);
+  r.all_links = g.link_count();
+  r.all_loops = r.loops;
+  return r;
+}
+
+// The links an ask needs: the asked links, those of asked rates, the link of each asked tracer
+// point, and for an asked joint one of its links (both for a prismatic joint: its sliding rates).
+std::vector<int> asked_links(const MechanismScene& s) {
+  const Linkage& g = s.linkage;
+  std::vector<int> out;
+  for (const AskedRate& r : s.ask->rates) out.push_back(*g.find_link(r.subject.name));
+  for (const AskedName& n : s.ask->links) out.push_back(*g.find_link(n.name));
+  for (const AskedName& n : s.ask->points) {
+    const auto p = std::find_if(s.points.begin(), s.points.end(), [&](const MechanismPoint& q) { return q.name == n.name; });
+    if (p != s.points.end()) {
+      out.push_back(p->link);
+      continue;
+    }
+    const LinkageJoint& j = g.joint(*g.find_joint(n.name));
+    out.push_back(j.links[0]);
+    if (j.type == JointType::Prismatic) out.push_back(j.links[1]);
+  }
+  return out;
+}
+
+// Only the asked rows of a check made on the sub-mechanism.
+void keep_asked_rows(MechanismCheck& r, const SceneAsk& ask) {
+  std::vector<std::string> names, omega, omega_dot;
+  const auto add_link = [&](const std::string& name) {
+    if (std::find(names.begin(), names.end(), name) != names.end()) return;
+    const auto k = static_cast<size_t>(std::find(r.link_names.begin(), r.link_names.end(), name) - r.link_names.begin());
+    names.push_back(name), omega.push_back(r.omega[k]), omega_dot.push_back(r.omega_dot[k]);
+  };
+  for (const AskedRate& x : ask.rates) add_link(x.subject.name);
+  for (const AskedName& x : ask.links) add_link(x.name);
+  const auto asked_point = [&](const MechanismCheck::PointMotion& p) {
+    return std::any_of(ask.points.begin(), ask.points.end(), [&](const AskedName& n) { return n.name == p.name; });
+  };
+  std::erase_if(r.joints, [&](const auto& p) { return !asked_point(p); });
+  std::erase_if(r.points, [&](const auto& p) { return !asked_point(p); });
+  r.computed_links = r.link_names;
+  r.link_names = std::move(names), r.omega = std::move(omega), r.omega_dot = std::move(omega_dot);
+  r.relative.clear();
+}
+
+}  // namespace
+
+MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<MechanismCatalogue>& catalogues,
+                               Arithmetic a) {
+  std::vector<MechanismClaim> all = builtin_mechanism_claims();
+  std::vector<const MechanismCatalogue*> tables;
+  for (const MechanismCatalogue& cat : catalogues) {
+    all.insert(all.end(), cat.claims.begin(), cat.claims.end());
+    tables.push_back(&cat);
+  }
+  // A scene whose inputs do not fix its motion gets the whole check's error.
+  if (!s.ask || !s.ask->restricts() || !inputs_fix_motion(s.linkage, s.inputs)) return check_solved(s, all, tables, a);
+  const std::vector<MechanismClaim> chosen = asked_claims(all, s.ask, s.source);
+  std::erase_if(tables, [&](const MechanismCatalogue* cat) {
+    return std::none_of(cat->claims.begin(), cat->claims.end(), [&](const MechanismClaim& c) {
+      return std::any_of(chosen.begin(), chosen.end(), [&](const MechanismClaim& k) { return k.info.id == c.info.id; });
+    });
+  });
+  const SubMechanism sub = determined_sub_mechanism(s, asked_links(s));
+  MechanismCheck r = check_solved(sub.scene, chosen, tables, a);
+  r.all_links = s.linkage.link_count();
+  r.all_loops = static_cast<int>(s.linkage.loops().size());
+  r.ask = s.ask;
+  keep_asked_rows(r, *s.ask);
   return r;
 }
 

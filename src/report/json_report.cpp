@@ -40,6 +40,17 @@ json rates_object(const std::vector<std::optional<std::string>>& v) {
   return o;
 }
 
+// With an `ask`, only the asked sides (null where undefined).
+json asked_rates_object(const std::vector<std::optional<std::string>>& v, const SceneAsk& ask, bool dot) {
+  json o = json::object();
+  for (const AskedRate& r : ask.rates) {
+    if (r.dot != dot) continue;
+    const auto& x = v[static_cast<size_t>(std::stoi(r.subject.name) - 1)];
+    o[r.subject.name] = x ? json(*x) : json(nullptr);
+  }
+  return o;
+}
+
 json claim_json(const ClaimOutcome& c) {
   json j{{"id", c.info.id},
          {"verdict", std::string(to_string(c.verdict))},
@@ -101,7 +112,7 @@ json to_json(const PolygonCheck& check) {
     if (!c.is_as_expected(check.strict)) summary["not_as_expected"] = summary["not_as_expected"].get<int>() + 1;
   }
   if (check.strict) summary["strict"] = true;
-  return {{"scene", check.scene},
+  json j = {{"scene", check.scene},
           {"arithmetic", std::string(to_string(check.arithmetic))},
           {"polygon",
            {{"n", check.n},
@@ -114,6 +125,12 @@ json to_json(const PolygonCheck& check) {
           {"not_applicable", check.not_applicable},
           {"summary", summary},
           {"exit_status", exit_status(check)}};
+  if (check.ask) {
+    j["ask"] = check.ask->describe();
+    j["polygon"]["omega"] = asked_rates_object(check.omega, *check.ask, false);
+    j["polygon"]["omega_dot"] = asked_rates_object(check.omega_dot, *check.ask, true);
+  }
+  return j;
 }
 
 json to_json(const SweepReport& s) {

@@ -55,7 +55,17 @@ Section summary_section(const MechanismScene& scene, const MechanismCheck& check
       "claims as expected.",
       scene.name, scene.source, scene.linkage.link_count(), scene.linkage.joint_count(), check.loops, check.mobility,
       check.grubler, check.rank, check.condition, as_expected, check.claims.size()))));
-  s.blocks.push_back(table_block(claim_summary_table(check.claims, Arithmetic::Exact)));
+  if (check.ask) {
+    std::string asked, links;
+    for (const auto& item : check.ask->describe()) asked += (asked.empty() ? "" : "; ") + item;
+    for (const auto& l : check.computed_links) links += (links.empty() ? "" : ", ") + l;
+    s.blocks.push_back(paragraph(plain(fmt::format(
+        "The scene asks for {}. Only that was computed, on the smallest determined sub-mechanism found that "
+        "contains it: links {} ({} of {} links, {} of {} loops; mobility, rank and condition above are its own). "
+        "Sections of what was not needed are left out.",
+        asked, links, check.computed_links.size(), check.all_links, check.loops, check.all_loops))));
+  }
+  if (!check.claims.empty()) s.blocks.push_back(table_block(claim_summary_table(check.claims, Arithmetic::Exact)));
   if (!check.not_applicable.empty()) {
     std::string na;
     for (const auto& id : check.not_applicable) na += (na.empty() ? "" : ", ") + id;
@@ -72,10 +82,14 @@ Section mechanism_section(const MechanismScene& scene, const MechanismCheck& che
                                    mechanism_drawing(scene)}));
   Table links{{plain("link"), tex("\\omega"), tex("\\dot\\omega")}, {}};
   for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
-    links.rows.push_back({plain(check.link_names[k] + (static_cast<int>(k) == scene.linkage.ground() ? " (ground)" : "")),
-                          plain(check.omega[k]), plain(check.omega_dot[k])});
-  s.blocks.push_back(paragraph(plain("Angular velocity and acceleration of every link relative to the ground (exact):")));
-  s.blocks.push_back(table_block(std::move(links)));
+    links.rows.push_back(
+        {plain(check.link_names[k] + (check.link_names[k] == scene.linkage.link_name(scene.linkage.ground()) ? " (ground)" : "")),
+         plain(check.omega[k]), plain(check.omega_dot[k])});
+  if (!links.rows.empty()) {
+    s.blocks.push_back(paragraph(plain(std::string("Angular velocity and acceleration of ") +
+                                       (check.ask ? "the asked links" : "every link") + " relative to the ground (exact):")));
+    s.blocks.push_back(table_block(std::move(links)));
+  }
   Table pts{{plain("joint / point"), plain("velocity"), plain("acceleration"), plain("sliding rate, acceleration")}, {}};
   const auto add = [&](const MechanismCheck::PointMotion& p) {
     pts.rows.push_back({plain(p.name), plain("(" + p.v[0] + ", " + p.v[1] + ")"), plain("(" + p.a[0] + ", " + p.a[1] + ")"),
@@ -83,7 +97,7 @@ Section mechanism_section(const MechanismScene& scene, const MechanismCheck& che
   };
   for (const auto& p : check.joints) add(p);
   for (const auto& p : check.points) add(p);
-  s.blocks.push_back(table_block(std::move(pts)));
+  if (!pts.rows.empty() || !check.ask) s.blocks.push_back(table_block(std::move(pts)));
   return s;
 }
 
@@ -217,7 +231,7 @@ Document build_mechanism_document(const MechanismScene& scene, const MechanismCh
   d.subtitle = "exact kinematics of a planar linkage; linkproof";
   d.sections.push_back(summary_section(scene, check));
   d.sections.push_back(mechanism_section(scene, check));
-  if (options.plans) d.sections.push_back(plans_section(scene, check));
+  if (options.plans && !check.ask) d.sections.push_back(plans_section(scene, check));  // plans need every joint
   if (!check.tables.empty()) d.sections.push_back(tables_section(check));
   Section terms = terms_section(check.claims);
   if (!terms.subsections.empty()) d.sections.push_back(std::move(terms));

@@ -1,6 +1,7 @@
 #include "linkproof/report/mechanism_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fmt/ostream.h>
 
 #include "linkproof/report/json_report.h"
@@ -70,7 +71,7 @@ json to_json(const MechanismCheck& c) {
   }
   for (const auto& cl : c.claims) claims.push_back(to_json(cl));
   const json summary = claims_summary_json(c.claims);
-  return {{"scene", c.scene},
+  json j = {{"scene", c.scene},
           {"arithmetic", std::string(to_string(c.arithmetic))},
           {"arithmetic_note", c.arithmetic_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.arithmetic_note)},
           {"mobility", c.mobility},
@@ -90,6 +91,11 @@ json to_json(const MechanismCheck& c) {
           {"not_applicable", c.not_applicable},
           {"summary", summary},
           {"exit_status", exit_status(c)}};
+  if (c.ask) {
+    j["ask"] = c.ask->describe();
+    j["computed"] = {{"links", c.computed_links}, {"of_links", c.all_links}, {"of_loops", c.all_loops}};
+  }
+  return j;
 }
 
 void write_text(std::ostream& out, const MechanismCheck& c) {
@@ -97,10 +103,17 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
   fmt::print(out, "mobility {} (Gruebler {}), {} loops, {} unknowns, rank {}, condition {:.3g}, closure residual {}\n\n",
              c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, c.closure_residual);
   if (!c.arithmetic_note.empty()) fmt::print(out, "note: {}\n\n", c.arithmetic_note);
-  fmt::print(out, "{:<10} {:>28} {:>28}\n", "link", "omega", "omega_dot");
-  for (size_t l = 0; l < c.link_names.size(); ++l)
-    fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], c.omega[l], c.omega_dot[l]);
-  fmt::print(out, "\n{:<10} {:>40} {:>40}\n", "joint", "v", "a");
+  if (c.ask)
+    fmt::print(out, "asked (the scene's `ask`): {}\ncomputed on the sub-mechanism of links {} ({} of {} links, {} of {} "
+               "loops): nothing else is needed for what is asked\n\n",
+               fmt::join(c.ask->describe(), "; "), fmt::join(c.computed_links, ", "), c.computed_links.size(),
+               c.all_links, c.loops, c.all_loops);
+  if (!c.ask || !c.link_names.empty()) {
+    fmt::print(out, "{:<10} {:>28} {:>28}\n", "link", "omega", "omega_dot");
+    for (size_t l = 0; l < c.link_names.size(); ++l)
+      fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], c.omega[l], c.omega_dot[l]);
+  }
+  if (!c.ask || !c.joints.empty() || !c.points.empty()) fmt::print(out, "\n{:<10} {:>40} {:>40}\n", "joint", "v", "a");
   for (const auto* list : {&c.joints, &c.points})
     for (const auto& p : *list)
       fmt::print(out, "{:<10} {:>40} {:>40}{}\n", p.name, fmt::format("({}, {})", p.v[0], p.v[1]),

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <ginac/ginac.h>
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -54,10 +55,26 @@ Section summary_section(const PolygonScene& scene, const PolygonCheck& check) {
        text(fmt::format("{} of {} as expected. ", as_expected, check.claims.size())),
        text("Each verdict rests on this one instance; a proof for every n is made by "),
        text("`linkproof report` on the claim file (prove).")}));
+  if (check.ask) {
+    std::string asked;
+    for (const auto& item : check.ask->describe()) asked += (asked.empty() ? "" : "; ") + item;
+    s.blocks.push_back(paragraph(plain("The scene asks for " + asked +
+                                       "; nothing else was computed, and the sections of what was not needed are left out.")));
+    if (!check.ask->rates.empty()) {
+      Table t{{plain("asked"), plain("value")}, {}};
+      for (const AskedRate& r : check.ask->rates) {
+        const auto& v = (r.dot ? check.omega_dot : check.omega)[static_cast<size_t>(std::stoi(r.subject.name) - 1)];
+        t.rows.push_back({tex(std::string(r.dot ? "\\dot\\omega_{" : "\\omega_{") + r.subject.name + "," +
+                              std::to_string(check.n) + "}"),
+                          plain(v ? *v : "undefined")});
+      }
+      s.blocks.push_back(table_block(std::move(t)));
+    }
+  }
   if (check.dead_centre)
     s.blocks.push_back(paragraph(plain("Dead centre: " + check.dead_centre_reason +
                                        ". The ground truth does not exist here; every claim is undefined.")));
-  s.blocks.push_back(table_block(claim_summary_table(check.claims, check.arithmetic)));
+  if (!check.claims.empty()) s.blocks.push_back(table_block(claim_summary_table(check.claims, check.arithmetic)));
   if (!check.not_applicable.empty()) {
     std::string na;
     for (const auto& id : check.not_applicable) na += (na.empty() ? "" : ", ") + id;
@@ -76,8 +93,14 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
   for (int j = 1; j <= n; ++j) {
     const auto& w = check.omega[static_cast<size_t>(j - 1)];
     const auto& wd = check.omega_dot[static_cast<size_t>(j - 1)];
+    const auto asked = [&](bool dot) {
+      return std::any_of(check.ask->rates.begin(), check.ask->rates.end(),
+                         [&](const AskedRate& r) { return r.dot == dot && r.subject.name == std::to_string(j); });
+    };
+    if (check.ask && !asked(false) && !asked(true)) continue;  // only the asked rates
     values.rows.push_back({plain(std::to_string(j) + (j <= m ? " (input)" : j == n ? " (fixed)" : " (solved)")),
-                           plain(w ? *w : "undefined"), plain(wd ? *wd : "undefined")});
+                           plain(w ? *w : check.ask && !asked(false) ? "not asked" : "undefined"),
+                           plain(wd ? *wd : check.ask && !asked(true) ? "not asked" : "undefined")});
   }
   if (n > kSymbolicReportMaxN) {
     s.blocks.push_back(paragraph(
@@ -115,7 +138,16 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
   s.blocks.push_back(display_math("\\dot\\omega_{" + n1 + "," + N + "} = " + latex_of(wd1)));
   s.blocks.push_back(display_math("\\dot\\omega_{" + n2 + "," + N + "} = " + latex_of(wd2)));
 
-  // Coefficients of omega-dot_{n-1,n} in the input rates (ground_truth.h: by differentiation).
+  // Coefficients of omega-dot_{n-1,n} in the input rates (ground_truth.h: by differentiation):
+  // with an ask, only when an asked claim compares them term by term.
+  const bool terms_asked = std::any_of(check.claims.begin(), check.claims.end(), [](const auto& c) { return !c.terms.empty(); });
+  if (check.ask && !terms_asked) {
+    if (!values.rows.empty()) {
+      s.blocks.push_back(paragraph(plain("Exact values on this scene:")));
+      s.blocks.push_back(table_block(std::move(values)));
+    }
+    return s;
+  }
   s.blocks.push_back(paragraph({text("Coefficients of "), math("\\dot\\omega_{" + n1 + "," + N + "}"),
                                 text(" in the input rates (by differentiation; normalised), and their values here:")}));
   const TermCoefficients<Rational> values_here = engine.coefficients(scene.polygon).first;
@@ -259,8 +291,10 @@ Document build_polygon_document(GroundTruthEngine& engine, const std::vector<Cla
   d.title = "Derivation report: " + scene.name;
   d.subtitle = fmt::format("Dijksman (1966), the n-side polygon (n = {}); linkproof", check.n);
   d.sections.push_back(summary_section(scene, check));
-  if (!check.dead_centre) d.sections.push_back(derivation_section(engine, scene, check));
-  d.sections.push_back(construction_section(scene));
+  // With an ask, a section is left out when the asked items did not need what it shows.
+  if (!check.dead_centre && (!check.ask || check.computed.truth))
+    d.sections.push_back(derivation_section(engine, scene, check));
+  if (!check.ask || check.computed.construction) d.sections.push_back(construction_section(scene));
   Section terms = terms_section(check.claims);
   if (!terms.subsections.empty()) d.sections.push_back(std::move(terms));
   Section errata = errata_section(check.claims, options.scene_text);

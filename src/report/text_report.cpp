@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include "linkproof/io/sweep_scene.h"
 
@@ -43,13 +44,22 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
     fmt::print(out, "DEAD CENTRE: D = r_{} x r_{} = 0: {}\n", c.n - 2, c.n - 1, c.dead_centre_reason);
     fmt::print(out, "The ground truth does not exist here; every claim is undefined.\n");
   }
-  fmt::print(out, "ground truth (loop closure, solved exactly), relative to side {}:\n", c.n);
-  for (int j = 0; j < c.n; ++j)
-    fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j]),
-               value_or_undefined(c.omega_dot[j]));
+  if (c.ask) {
+    fmt::print(out, "asked (the scene's `ask`; nothing else computed): {}\n", fmt::join(c.ask->describe(), "; "));
+    if (!c.ask->rates.empty()) fmt::print(out, "asked rates (loop closure, solved exactly), relative to side {}:\n", c.n);
+    for (const AskedRate& r : c.ask->rates) {
+      const size_t j = static_cast<size_t>(std::stoi(r.subject.name) - 1);
+      fmt::print(out, "  {:<16} = {}\n", r.text(), value_or_undefined((r.dot ? c.omega_dot : c.omega)[j]));
+    }
+  } else {
+    fmt::print(out, "ground truth (loop closure, solved exactly), relative to side {}:\n", c.n);
+    for (int j = 0; j < c.n; ++j)
+      fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j]),
+                 value_or_undefined(c.omega_dot[j]));
+  }
   fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, readable(c.determinant));
 
-  fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
+  if (!c.claims.empty() || !c.ask) fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
   int unexpected = 0, not_as_expected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
   for (const auto& cl : c.claims) {
     std::string mark = cl.is_as_expected(c.strict) ? "" : "  <-- UNEXPECTED";

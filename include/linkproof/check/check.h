@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "linkproof/check/ask.h"
 #include "linkproof/claims/claim.h"
 #include "linkproof/core/error.h"
 #include "linkproof/check/arithmetic.h"
@@ -58,8 +59,16 @@ struct PolygonCheck {
   /// Dead centre (D = 0): the ground truth does not exist; every claim is then undefined.
   bool dead_centre = false;
   std::string dead_centre_reason;
-  /// omega_{j,n}, omega-dot_{j,n} for j = 1..n (0-based); nullopt where undefined.
+  /// omega_{j,n}, omega-dot_{j,n} for j = 1..n (0-based); nullopt where undefined, or not
+  /// asked when `ask` restricts (reports show only the asked rates then).
   std::vector<std::optional<std::string>> omega, omega_dot;
+  /// The scene's `ask` (check/ask.h) when it restricts what is computed.
+  std::optional<SceneAsk> ask;
+  /// What the check computed (claims/polygon_context.h computes each on first use): reports
+  /// leave out the sections of what was not needed, and tests see what an ask saves.
+  struct Computed {
+    bool truth = false, closed_forms = false, construction = false, four_bar_truth = false;
+  } computed;
   /// D = r_{n-2} x r_{n-1} in the arithmetic's text form.
   std::string determinant;
   std::vector<ClaimOutcome> claims;
@@ -73,9 +82,12 @@ struct PolygonCheck {
 /// Never throws for a valid polygon (see polygon_input_problem): a claim whose evaluation
 /// throws gets the verdict Error with the message. Cost O(n^2) operations in the arithmetic
 /// (the Theta(n^2) pair terms), plus the text of the evidence kept.
+/// With an `ask` that restricts (check/ask.h), only the asked rates are computed: an input
+/// side's or the fixed side's rate costs nothing, a solved side's (n-2, n-1) the engine's
+/// motion; the claims evaluated are `catalogue` as given (asked_claims chooses them).
 PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
                            const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a,
-                           Evidence evidence = Evidence::All);
+                           Evidence evidence = Evidence::All, const std::optional<SceneAsk>& ask = std::nullopt);
 
 /// Runs one claim in scalar type T on a prepared context.
 template <class T>

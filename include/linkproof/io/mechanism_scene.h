@@ -25,6 +25,8 @@
 //     - {point: "23", moving: "2", fixed: "4"}      # path curvature centres (docs/curvature.md)
 //   joint_joining:                                  # optional: reductions, in order
 //     - {link: "2", bars: ["1", "3"], order: 2}
+//   ask: [links: ["5"], claims: [routes_agree]]     # optional: compute only these (check/ask.h);
+//                                                   # omega(L), omega_dot(L) of links, points: [joints or points]
 //
 // - A joint has a unique name, `type` revolute or prismatic, exactly two different links and a
 //   point `at`; a prismatic joint also a non-zero `axis` (links[0] is the guide that carries the

@@ -9,6 +9,8 @@
 //     joints: [[0, 0], [1, 4], [5, 5], [7, 1], [3, -2]]  # K_1..K_n; side n (K_n -> K_1) is fixed
 //     omega: [2, -1]               # omega_{j,n},     j = 1..n-3 (rad per unit time, ccw > 0)
 //     omega_dot: [1, 3]            # omega-dot_{j,n}, j = 1..n-3
+//   ask: [omega_dot(4), claims: [eq22]]   # optional: compute only these (check/ask.h); rates
+//                                         # omega(j), omega_dot(j) for sides j = 1..n
 //
 // - n >= 4 joints, each a list of exactly two numbers [x, y]; omega and omega_dot hold exactly
 //   n - 3 numbers each. No two joints may coincide (a coincident adjacent pair is a zero-length
@@ -39,6 +41,7 @@
 
 #include <string>
 
+#include "linkproof/check/ask.h"
 #include "linkproof/core/exact.h"
 #include "linkproof/geometry/polygon.h"
 
@@ -50,6 +53,7 @@ struct PolygonScene {
   std::string source;            ///< the file path, or the label given to parse_polygon_scene
   Polygon<Rational> polygon;     ///< K_1..K_n, exact; n >= 4, no coincident joints
   InputRates<Rational> rates;    ///< omega / omega_dot, 0-based (omega[0] = omega_{1,n}), n-3 each
+  std::optional<SceneAsk> ask;   ///< field `ask`: what to compute (nullopt: everything)
 };
 
 /// Upper bound on n: far beyond any linkage, low enough that checking all pairs of joints for

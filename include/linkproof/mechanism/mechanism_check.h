@@ -87,13 +87,22 @@ struct MechanismCheck {
   double dimension_residual = 0;
   std::vector<ClaimOutcome> claims;
   std::vector<std::string> not_applicable;
+  /// The scene's `ask` when it restricts (check/ask.h): only the asked links, joints and points
+  /// are listed (no relative rates), only the asked claims run, and everything is computed on
+  /// the smallest determined sub-mechanism found that contains them
+  /// (mechanism/sub_mechanism.h): its links are `computed_links`, of `all_links` links and
+  /// `all_loops` loops in the whole (mobility, loops, rank, condition are the sub-mechanism's).
+  std::optional<SceneAsk> ask;
+  std::vector<std::string> computed_links;
+  int all_links = 0, all_loops = 0;
 };
 
 /// The exact solution by the symbolic route (throws InputError for bad mobility/inputs).
 MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& scene);
 
-/// Solves and runs the built-in claims plus those of `catalogues` (the scene's). Throws
-/// InputError for a scene that cannot be solved (locked, wrong number of inputs, ...).
+/// Solves and runs the built-in claims plus those of `catalogues` (the scene's); with a
+/// restricting `ask`, only what it asks (see MechanismCheck::ask). Throws InputError for a scene
+/// that cannot be solved (locked, wrong number of inputs, ...) or an ask naming an unknown claim.
 MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<MechanismCatalogue>& catalogues,
                                Arithmetic a);
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "linkproof/check/ask.h"
 #include "linkproof/mechanism/linkage.h"
 
 namespace linkproof {
@@ -52,6 +53,8 @@ struct MechanismScene {
   std::vector<JointJoiningRequest> joint_joining;
   /// max over dimensions of | |AB| - length | (an approximation in double; 0 if none).
   double dimension_residual = 0;
+  /// Top-level `ask` (check/ask.h): the links, points and claims to compute (nullopt: everything).
+  std::optional<SceneAsk> ask;
 };
 
 }  // namespace linkproof
