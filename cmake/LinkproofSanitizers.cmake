@@ -13,4 +13,8 @@ endif()
 if(LINKPROOF_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+  # The ASan defaults (no leak checking, cmake/sanitizer_defaults.cpp) in every executable; not
+  # part of the installed package's interface.
+  add_library(linkproof_sanitizer_defaults OBJECT ${CMAKE_CURRENT_LIST_DIR}/sanitizer_defaults.cpp)
+  link_libraries("$<BUILD_INTERFACE:$<$<STREQUAL:$<TARGET_PROPERTY:TYPE>,EXECUTABLE>:linkproof_sanitizer_defaults>>")
 endif()
