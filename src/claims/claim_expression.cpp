@@ -439,6 +439,11 @@ const std::vector<size_t>& canonical_order(const GiNaC::ex& e) {
   return cache.emplace(e, std::move(order)).first->second;
 }
 
+CanonicalForm& canonical_form() {
+  static CanonicalForm form = CanonicalForm::with_atoms();
+  return form;
+}
+
 int code_of_call(const GiNaC::ex& e) {
   using namespace GiNaC;
   if (is_ex_the_function(e, lp_word1) || is_ex_the_function(e, lp_word2))

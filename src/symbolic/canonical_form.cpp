@@ -5,6 +5,7 @@
 
 #include "ex_text.h"
 #include "linkproof/core/error.h"
+#include "linkproof/symbolic/canonical_order.h"
 #include "structure_hash.h"
 
 namespace linkproof {
@@ -35,6 +36,12 @@ CanonicalForm::CanonicalForm(const std::vector<ex>& inputs) {
   }
 }
 
+CanonicalForm CanonicalForm::with_atoms() {
+  CanonicalForm f(std::vector<ex>{});
+  f.atoms_ = true;
+  return f;
+}
+
 int CanonicalForm::compare(Id a, Id b) const {
   if (a == b) return 0;
   const Node& x = nodes_[a];
@@ -59,6 +66,12 @@ int CanonicalForm::compare(Id a, Id b) const {
         if (x.factors[i].second != y.factors[i].second) return x.factors[i].second < y.factors[i].second ? -1 : 1;
       }
       return 0;
+    case Kind::Atom: {
+      // Rare (a key collision): the full text, then (distinct symbols of one name) creation order.
+      const std::string tx = CanonicalOrder::text(x.atom), ty = CanonicalOrder::text(y.atom);
+      if (tx != ty) return tx < ty ? -1 : 1;
+      return a < b ? -1 : 1;
+    }
   }
   return 0;
 }
@@ -67,7 +80,8 @@ CanonicalForm::Id CanonicalForm::intern(Node n) {
   // The signature names children by id: ids identify structures exactly within this object.
   std::string sig;
   switch (n.kind) {
-    case Kind::One: return one;
+    case Kind::One:
+    case Kind::Atom: return one;  // not interned here (atom())
     case Kind::Symbol: sig = "s" + std::to_string(n.input); break;
     case Kind::Sum: {
       auto t = n.terms;
@@ -89,7 +103,8 @@ CanonicalForm::Id CanonicalForm::intern(Node n) {
   // Key: symbols by name and input index; sums and products as multisets of their children.
   std::vector<std::uint64_t> parts;
   switch (n.kind) {
-    case Kind::One: break;
+    case Kind::One:
+    case Kind::Atom: break;
     case Kind::Symbol: n.key = mix(mix(text_hash("symbol"), text_hash(input_names_[n.input])), n.input); break;
     case Kind::Sum:
       for (const auto& [id, c] : n.terms) parts.push_back(mix(nodes_[id].key, text_hash(numeric_text(c))));
@@ -185,11 +200,13 @@ CanonicalForm::Split CanonicalForm::split_uncached(const ex& e) {
   };
   if (is_a<numeric>(e)) {
     const numeric& num = ex_to<numeric>(e);
+    if (!num.is_rational() && atoms_) return atom(e);
     if (!num.is_rational()) throw InternalError("tape: non-rational constant " + ex_text(e));
     return {num, one};
   }
   if (is_a<symbol>(e)) {
     auto it = input_index_.find(e);
+    if (it == input_index_.end() && atoms_) return atom(e);
     if (it == input_index_.end()) throw InternalError("tape: symbol " + ex_text(e) + " is not an input");
     Node n;
     n.kind = Kind::Symbol;
@@ -220,6 +237,7 @@ CanonicalForm::Split CanonicalForm::split_uncached(const ex& e) {
   }
   if (is_a<power>(e)) {
     const ex& expo = e.op(1);
+    if ((!is_a<numeric>(expo) || !ex_to<numeric>(expo).is_integer()) && atoms_) return atom(e);
     if (!is_a<numeric>(expo) || !ex_to<numeric>(expo).is_integer())
       throw InternalError("tape: non-integer power " + ex_text(e));
     const int k = ex_to<numeric>(expo).to_int();
@@ -233,7 +251,32 @@ CanonicalForm::Split CanonicalForm::split_uncached(const ex& e) {
     append_factors(b.primitive, k, factors);
     return {b.content.power(k), product_of(std::move(factors))};
   }
+  if (atoms_) return atom(e);
   throw InternalError("tape: cannot compile " + ex_text(e));
+}
+
+CanonicalForm::Split CanonicalForm::atom(const ex& e) {
+  if (auto it = atom_ids_.find(e); it != atom_ids_.end()) return {numeric(1), it->second};
+  Node n;
+  n.kind = Kind::Atom;
+  n.atom = e;
+  if (is_a<symbol>(e)) {
+    n.key = mix(text_hash("atom"), text_hash(ex_to<symbol>(e).get_name()));
+  } else if (is_a<function>(e) || is_a<power>(e)) {
+    // By name and the canonical form of the arguments: GiNaC's form of an argument (a sum in
+    // a product, say) is no more canonical than anywhere else.
+    n.key = text_hash(is_a<function>(e) ? ex_to<function>(e).get_name() : std::string("^"));
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const Split a = split(e.op(i));
+      n.key = mix(n.key, mix(text_hash(numeric_text(a.content)), nodes_[a.primitive].key));
+    }
+  } else {
+    n.key = text_hash(CanonicalOrder::text(e));
+  }
+  const auto id = static_cast<Id>(nodes_.size());
+  nodes_.push_back(std::move(n));
+  atom_ids_.emplace(e, id);
+  return {numeric(1), id};
 }
 
 }  // namespace linkproof

@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "linkproof/symbolic/canonical_form.h"
+
 namespace linkproof {
 
 /// Where a character of an expression is in its file: (line, column), both 1-based.
@@ -77,6 +79,11 @@ int code_of_call(const GiNaC::ex& e);
 /// them by hash values that depend on addresses (ASLR), so summing in GiNaC's order made
 /// floating-point results and bounds differ between runs of the same program.
 const std::vector<size_t>& canonical_order(const GiNaC::ex& e);
+/// The canonical form (symbolic/canonical_form.h, with atoms: vocabulary symbols and calls) in
+/// which claim expressions are evaluated: GiNaC places signs and numeric factors between sums
+/// and products by the same address-dependent order, so evaluating its trees as stored gave
+/// other floating-point results in other runs. One per process, on the thread that uses GiNaC.
+CanonicalForm& canonical_form();
 }  // namespace claim_atoms
 
 }  // namespace linkproof

@@ -32,7 +32,10 @@
 // children of every node are stored in that order, which is the order the Tape evaluates them in.
 //
 // Supported: rational numbers, the given input symbols, sums, products, integer powers; anything
-// else is an InternalError. Not thread-safe (GiNaC is not).
+// else is an InternalError, unless the form was made with_atoms(): then every other symbol,
+// function call, irrational number or non-integer power is an opaque Atom node (keyed by name
+// and the canonical keys of its arguments), for evaluators that give atoms a value themselves
+// (the claim evaluator). Not thread-safe (GiNaC is not).
 #pragma once
 
 #include <ginac/ginac.h>
@@ -48,14 +51,15 @@ namespace linkproof {
 class CanonicalForm {
  public:
   using Id = std::uint32_t;
-  enum class Kind : std::uint8_t { One, Symbol, Sum, Product };
+  enum class Kind : std::uint8_t { One, Symbol, Sum, Product, Atom };
 
   /// A primitive part. Children are in canonical order (compare()).
   struct Node {
     Kind kind = Kind::One;
     std::uint32_t input = 0;                               ///< Symbol: index among the inputs
     std::vector<std::pair<Id, GiNaC::numeric>> terms;      ///< Sum (>= 2 terms): (primitive, nonzero integer coefficient)
-    std::vector<std::pair<Id, int>> factors;               ///< Product: (Symbol or Sum, nonzero exponent), not a lone x^1
+    std::vector<std::pair<Id, int>> factors;               ///< Product: (Symbol, Sum or Atom, nonzero exponent), not a lone x^1
+    GiNaC::ex atom;                                        ///< Atom: the opaque subexpression
     std::uint64_t key = 0;
   };
 
@@ -71,6 +75,8 @@ class CanonicalForm {
   /// `inputs` are the symbols an expression may contain; a symbol is identified by its
   /// position here (and named in keys by its name).
   explicit CanonicalForm(const std::vector<GiNaC::ex>& inputs);
+  /// A form without inputs in which whatever is not a rational function is an Atom.
+  static CanonicalForm with_atoms();
 
   /// The split of e; memoised per distinct subexpression. Throws InternalError for what is not
   /// a rational function of the inputs with rational coefficients.
@@ -87,12 +93,15 @@ class CanonicalForm {
   Id sum_of(std::vector<std::pair<Id, GiNaC::numeric>> terms, GiNaC::numeric& content);
   Id product_of(std::vector<std::pair<Id, int>> factors);
   Split split_uncached(const GiNaC::ex& e);
+  Split atom(const GiNaC::ex& e);
 
+  bool atoms_ = false;
   std::vector<Node> nodes_;
   std::vector<std::string> input_names_;
   std::unordered_map<GiNaC::ex, std::uint32_t, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> input_index_;
   std::unordered_map<std::string, Id> interned_;
   std::unordered_map<GiNaC::ex, Split, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
+  std::unordered_map<GiNaC::ex, Id, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> atom_ids_;
 };
 
 }  // namespace linkproof
