@@ -161,10 +161,10 @@ TEST(BatchSweep, DoubleArithmeticGivesTheBytesOfOneRun) {
   two.jobs = 2;
   two.out = dir + "/two.jsonl";
   ASSERT_EQ(run_batch_sweep(catalogue, two).status, BatchSweepResult::Status::Complete);
-  // Every process compiles the same tape (symbolic/canonical_form.h: GiNaC's own trees depend on
-  // addresses and on the symbol serials of the process) and evaluates claims in the order of
-  // claim_atoms::canonical_order, so double evidence (values, tolerances, bounds) is the same
-  // bytes whatever the number of workers.
+  // Every process compiles the same tape and evaluates claims in the same canonical form
+  // (symbolic/canonical_form.h; GiNaC's own trees depend on addresses and on the symbol serials
+  // of the process), so double evidence (values, tolerances, bounds) is the same bytes whatever
+  // the number of workers.
   EXPECT_EQ(read_file(one.out), read_file(two.out));
 }
 
