@@ -13,7 +13,6 @@
 
 #include "linkproof/claims/vocabulary.h"
 #include "linkproof/core/error.h"
-#include "linkproof/symbolic/canonical_order.h"
 
 namespace GiNaC {
 // A call of a vocabulary word: lp_word1(code, a) and lp_word2(code, a, b). GiNaC leaves them
@@ -420,23 +419,9 @@ int code_of_symbol(const GiNaC::ex& e) {
   return -1;
 }
 
-const std::vector<size_t>& canonical_order(const GiNaC::ex& e) {
-  // Claim expressions are few and small: one cached order per distinct node, on the one thread
-  // that uses GiNaC.
-  static std::unordered_map<GiNaC::ex, std::vector<size_t>, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> cache;
-  // Sorted by the full canonical text (not CanonicalOrder::order's hashed keys): the order of
-  // evaluation decides which undefined quantity a report names first, so it stays the order
-  // claims have always been evaluated in. Ties (equal texts) keep the operand index.
-  const auto it = cache.find(e);
-  if (it != cache.end()) return it->second;
-  std::vector<std::pair<std::string, size_t>> keyed;
-  keyed.reserve(e.nops());
-  for (size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(CanonicalOrder::text(e.op(i)), i);
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<size_t> order;
-  order.reserve(keyed.size());
-  for (const auto& k : keyed) order.push_back(k.second);
-  return cache.emplace(e, std::move(order)).first->second;
+CanonicalForm& canonical_form() {
+  static CanonicalForm form = CanonicalForm::with_atoms();
+  return form;
 }
 
 int code_of_call(const GiNaC::ex& e) {

@@ -5,26 +5,15 @@
 #include <sstream>
 #include <string_view>
 
+#include "structure_hash.h"
+
 namespace linkproof {
 
 using namespace GiNaC;
+using structure_hash::mix;
+using structure_hash::text_hash;
 
 namespace {
-
-/// splitmix64's finaliser: a well-mixed combination that is the same on every run.
-std::uint64_t mix(std::uint64_t h, std::uint64_t x) {
-  std::uint64_t z = h ^ (x + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-std::uint64_t text_hash(std::string_view s) {
-  // FNV-1a: std::hash is not promised to be the same across library versions.
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ULL;
-  return h;
-}
 
 std::string leaf_text(const ex& e) {
   std::ostringstream o;

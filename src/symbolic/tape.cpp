@@ -1,35 +1,31 @@
 #include "linkproof/symbolic/tape.h"
 
+#include <map>
+#include <optional>
+#include <sstream>
 #include <unordered_map>
 
-#include "ex_text.h"
-#include "linkproof/symbolic/canonical_order.h"
+#include "linkproof/symbolic/canonical_form.h"
 
 namespace linkproof {
 
 using namespace GiNaC;
 
-namespace {
-struct ExHash {
-  size_t operator()(const ex& e) const { return e.gethash(); }
-};
-}  // namespace
-
-/// Flattens expressions into a Tape, memoising structurally equal subexpressions.
+/// Emits the canonical form (canonical_form.h) of expressions as a Tape, one instruction list
+/// per distinct primitive part: the tape depends on the functions compiled, not on how GiNaC
+/// happened to store them in this run.
 class TapeCompiler {
  public:
-  TapeCompiler(Tape& tape, const std::vector<ex>& inputs) : tape_(tape) {
-    for (size_t i = 0; i < inputs.size(); ++i) input_index_[inputs[i]] = static_cast<std::uint32_t>(i);
-  }
+  TapeCompiler(Tape& tape, const std::vector<ex>& inputs) : tape_(tape), form_(inputs) {}
 
   std::uint32_t compile(const ex& e) {
-    if (auto it = memo_.find(e); it != memo_.end()) return it->second;
-    const std::uint32_t slot = compile_uncached(e);
-    memo_.emplace(e, slot);
-    return slot;
+    const CanonicalForm::Split s = form_.split(e);
+    return term(s.primitive, s.content);
   }
 
  private:
+  using Id = CanonicalForm::Id;
+
   std::uint32_t emit(Tape::Instruction in) {
     tape_.code_.push_back(in);
     return static_cast<std::uint32_t>(tape_.code_.size() - 1);
@@ -40,62 +36,85 @@ class TapeCompiler {
     tape_.operands_.insert(tape_.operands_.end(), args.begin(), args.end());
     return emit({op, first, static_cast<std::uint32_t>(args.size()), 0});
   }
-  std::uint32_t power_slot(const ex& base, long k) {
-    if (k == 1) return compile(base);
-    return emit({Tape::Op::Power, compile(base), 0, static_cast<int>(k)});
+
+  /// One slot per distinct constant.
+  std::uint32_t constant(const numeric& c) {
+    std::ostringstream text;
+    text << c;
+    auto [it, fresh] = constants_.try_emplace(text.str(), 0);
+    if (fresh) {
+      tape_.constants_.push_back(cln::the<cln::cl_RA>(c.to_cl_N()));
+      it->second = emit({Tape::Op::Constant, static_cast<std::uint32_t>(tape_.constants_.size() - 1), 0, 0});
+    }
+    return it->second;
   }
 
-  std::uint32_t compile_uncached(const ex& e) {
-    if (is_a<numeric>(e)) {
-      const numeric& num = ex_to<numeric>(e);
-      if (!num.is_rational()) throw InternalError("tape: non-rational constant " + ex_text(e));
-      tape_.constants_.push_back(cln::the<cln::cl_RA>(num.to_cl_N()));
-      return emit({Tape::Op::Constant, static_cast<std::uint32_t>(tape_.constants_.size() - 1), 0, 0});
+  /// c * node(p). A product takes the coefficient as its first factor (one instruction, as
+  /// GiNaC's own c*x*y would be); anything else is multiplied by it.
+  std::uint32_t term(Id p, const numeric& c) {
+    if (c.is_zero()) return constant(c);
+    if (c.is_equal(numeric(1))) return primitive(p);
+    if (p == CanonicalForm::one) return constant(c);
+    std::ostringstream text;
+    text << p << "*" << c;
+    if (auto it = terms_.find(text.str()); it != terms_.end()) return it->second;
+    const std::uint32_t slot = form_.node(p).kind == CanonicalForm::Kind::Product
+                                   ? product(form_.node(p), constant(c))
+                                   : emit_nary(Tape::Op::Product, {constant(c), primitive(p)});
+    terms_.emplace(text.str(), slot);
+    return slot;
+  }
+
+  std::uint32_t power(Id base, int k) {
+    if (k == 1) return primitive(base);
+    auto [it, fresh] = powers_.try_emplace({base, k}, 0);
+    if (fresh) it->second = emit({Tape::Op::Power, primitive(base), 0, k});
+    return it->second;
+  }
+
+  /// One quotient per product: the coefficient and the positive powers over the product of the
+  /// negative powers, each list in canonical order.
+  std::uint32_t product(const CanonicalForm::Node& n, std::optional<std::uint32_t> coefficient) {
+    std::vector<std::uint32_t> num, den;
+    if (coefficient) num.push_back(*coefficient);
+    for (const auto& [base, k] : n.factors) {
+      if (k > 0)
+        num.push_back(power(base, k));
+      else
+        den.push_back(power(base, -k));
     }
-    if (is_a<symbol>(e)) {
-      auto it = input_index_.find(e);
-      if (it == input_index_.end()) throw InternalError("tape: symbol " + ex_text(e) + " is not an input");
-      return emit({Tape::Op::Input, it->second, 0, 0});
-    }
-    // Operands in canonical order (canonical_order.h): GiNaC's own order depends on addresses,
-    // and a floating-point sum or product evaluated in it would round differently in every run.
-    if (is_a<add>(e)) {
-      std::vector<std::uint32_t> args;
-      for (size_t i : order_.order(e)) args.push_back(compile(e.op(i)));
-      return emit_nary(Tape::Op::Sum, args);
-    }
-    if (is_a<mul>(e)) {
-      // One quotient per product: numerator factors over the product of the negative powers.
-      std::vector<std::uint32_t> num, den;
-      for (size_t i : order_.order(e)) {
-        const ex& f = e.op(i);
-        if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer() &&
-            ex_to<numeric>(f.op(1)).is_negative())
-          den.push_back(power_slot(f.op(0), -ex_to<numeric>(f.op(1)).to_long()));
-        else
-          num.push_back(compile(f));
+    if (num.empty()) num.push_back(constant(1));
+    const std::uint32_t top = emit_nary(Tape::Op::Product, num);
+    if (den.empty()) return top;
+    return emit({Tape::Op::Quotient, top, emit_nary(Tape::Op::Product, den), 0});
+  }
+
+  std::uint32_t primitive(Id p) {
+    if (auto it = slots_.find(p); it != slots_.end()) return it->second;
+    const CanonicalForm::Node& n = form_.node(p);
+    std::uint32_t slot = 0;
+    switch (n.kind) {
+      case CanonicalForm::Kind::One: slot = constant(1); break;
+      case CanonicalForm::Kind::Symbol: slot = emit({Tape::Op::Input, n.input, 0, 0}); break;
+      case CanonicalForm::Kind::Sum: {
+        std::vector<std::uint32_t> args;
+        args.reserve(n.terms.size());
+        for (const auto& [t, c] : n.terms) args.push_back(term(t, c));
+        slot = emit_nary(Tape::Op::Sum, args);
+        break;
       }
-      if (num.empty()) num.push_back(compile(ex(1)));
-      const std::uint32_t top = emit_nary(Tape::Op::Product, num);
-      if (den.empty()) return top;
-      return emit({Tape::Op::Quotient, top, emit_nary(Tape::Op::Product, den), 0});
+      case CanonicalForm::Kind::Product: slot = product(n, std::nullopt); break;
     }
-    if (is_a<power>(e)) {
-      const ex& expo = e.op(1);
-      if (!is_a<numeric>(expo) || !ex_to<numeric>(expo).is_integer())
-        throw InternalError("tape: non-integer power " + ex_text(e));
-      const long k = ex_to<numeric>(expo).to_long();
-      if (k == 0) return compile(ex(1));
-      if (k > 0) return power_slot(e.op(0), k);
-      return emit({Tape::Op::Quotient, compile(ex(1)), power_slot(e.op(0), -k), 0});
-    }
-    throw InternalError("tape: cannot compile " + ex_text(e));
+    slots_.emplace(p, slot);
+    return slot;
   }
 
   Tape& tape_;
-  CanonicalOrder order_;
-  std::unordered_map<ex, std::uint32_t, ExHash, ex_is_equal> memo_;
-  std::unordered_map<ex, std::uint32_t, ExHash, ex_is_equal> input_index_;
+  CanonicalForm form_;
+  std::unordered_map<Id, std::uint32_t> slots_;
+  std::unordered_map<std::string, std::uint32_t> terms_;
+  std::unordered_map<std::string, std::uint32_t> constants_;
+  std::map<std::pair<Id, int>, std::uint32_t> powers_;
 };
 
 Tape::Tape(const std::vector<ex>& outputs, const std::vector<ex>& inputs, std::string denominator_name)

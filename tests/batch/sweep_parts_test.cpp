@@ -151,9 +151,6 @@ TEST(BatchSweep, KilledWorkerStopsTheRunAndResumeCompletes) {
 }
 
 TEST(BatchSweep, DoubleArithmeticGivesTheBytesOfOneRun) {
-  GTEST_SKIP() << "known defect (issue 13): a worker's engine derives its expressions with other GiNaC symbol "
-                  "serials than the parent's, so its double error bounds differ in the last digits "
-                  "(TapeDeterminism.DoubleResultsAreTheBytesOfAnyOtherRun)";
   const std::string dir = fresh_dir("sweep_double");
   const auto catalogue = dijksman1966::catalogue();
   BatchSweepOptions one;
@@ -164,9 +161,10 @@ TEST(BatchSweep, DoubleArithmeticGivesTheBytesOfOneRun) {
   two.jobs = 2;
   two.out = dir + "/two.jsonl";
   ASSERT_EQ(run_batch_sweep(catalogue, two).status, BatchSweepResult::Status::Complete);
-  // Every process sums in the canonical order of symbolic/canonical_order.h (the tape) and of
-  // claim_atoms::canonical_order (the claims), not in GiNaC's address-dependent order, so double
-  // evidence (values, tolerances, bounds) is the same bytes whatever the number of workers.
+  // Every process compiles the same tape and evaluates claims in the same canonical form
+  // (symbolic/canonical_form.h; GiNaC's own trees depend on addresses and on the symbol serials
+  // of the process), so double evidence (values, tolerances, bounds) is the same bytes whatever
+  // the number of workers.
   EXPECT_EQ(read_file(one.out), read_file(two.out));
 }
 

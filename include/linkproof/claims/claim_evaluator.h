@@ -104,43 +104,79 @@ class ClaimEvaluator {
       if (!q.is_rational()) throw error("the number " + text(e) + " is not rational");
       return Value::number(constant(from_rational<T>(cln::the<cln::cl_RA>(q.to_cl_N()))));
     }
-    if (is_exactly_a<add>(e)) {
-      const std::vector<size_t>& order = claim_atoms::canonical_order(e);  // the same in every run
-      Value sum = value(e.op(order[0]), b);
-      for (size_t i = 1; i < e.nops(); ++i) {
-        Value t = value(e.op(order[i]), b);
-        if (t.is_vector != sum.is_vector) throw error("a number added to a vector in " + text(e));
-        if (sum.is_vector) {
-          sum.x = sum.x + t.x;
-          sum.y = sum.y + t.y;
-        } else {
-          sum.s = sum.s + t.s;
-        }
-      }
-      return sum;
-    }
-    if (is_exactly_a<mul>(e)) {
-      const std::vector<size_t>& order = claim_atoms::canonical_order(e);
-      Value p = value(e.op(order[0]), b);
-      for (size_t i = 1; i < e.nops(); ++i) p = multiply(p, value(e.op(order[i]), b), e);
-      return p;
-    }
     if (is_exactly_a<power>(e)) {
       const ex& k = e.op(1);
       if (!is_exactly_a<numeric>(k) || !ex_to<numeric>(k).is_integer())
         throw error("only integer powers are allowed: " + text(e));
-      const int p = ex_to<numeric>(k).to_int();
-      Value base = value(e.op(0), b);
-      if (base.is_vector) throw error("power of a vector: " + text(e) + " (use norm2 or dot)");
-      RatePoly<T> r = constant(1);
-      for (int i = 0; i < std::abs(p); ++i) r = r * base.s;
-      if (p >= 0) return Value::number(r);
-      RatePoly<T> q = constant(1) / r;  // tests r for zero
-      divisors_.push_back(r.constant());
-      return Value::number(std::move(q));
+    }
+    if (is_exactly_a<add>(e) || is_exactly_a<mul>(e) || is_exactly_a<power>(e)) {
+      // The canonical form, not GiNaC's tree: GiNaC places signs and numeric factors between
+      // sums and products in an address-dependent order (claim_atoms::canonical_form()).
+      const CanonicalForm::Split s = claim_atoms::canonical_form().split(e);
+      return scaled(form_value(s.primitive, e, b), s.content, e);
     }
     if (const int code = claim_atoms::code_of_symbol(e); code >= 0) return global(vocabulary()[static_cast<size_t>(code)], b);
     if (const int code = claim_atoms::code_of_call(e); code >= 0) return call(vocabulary()[static_cast<size_t>(code)], e, b);
+    throw error("cannot evaluate " + text(e));
+  }
+
+  /// c * v; v itself if c is 1.
+  Value scaled(Value v, const GiNaC::numeric& c, const GiNaC::ex& e) {
+    if (c.is_equal(GiNaC::numeric(1))) return v;
+    const Value k = Value::number(constant(from_rational<T>(cln::the<cln::cl_RA>(c.to_cl_N()))));
+    return multiply(k, v, e);
+  }
+
+  /// The value of a primitive part of claim_atoms::canonical_form(), operands in its canonical
+  /// order; `e` is the expression it came from (for messages).
+  Value form_value(CanonicalForm::Id id, const GiNaC::ex& e, const IndexBindings& b) {
+    const CanonicalForm::Node& n = claim_atoms::canonical_form().node(id);
+    switch (n.kind) {
+      case CanonicalForm::Kind::One: return Value::number(constant(1));
+      case CanonicalForm::Kind::Atom: {
+        const GiNaC::ex atom = n.atom;  // value() may add nodes to the form: n may move
+        return value(atom, b);
+      }
+      case CanonicalForm::Kind::Symbol: break;  // a form with atoms has no inputs
+      case CanonicalForm::Kind::Sum: {
+        // Copied: evaluating a term may add nodes to the form (new subexpressions of a call).
+        const auto terms = n.terms;
+        Value sum = scaled(form_value(terms[0].first, e, b), terms[0].second, e);
+        for (size_t i = 1; i < terms.size(); ++i) {
+          Value t = scaled(form_value(terms[i].first, e, b), terms[i].second, e);
+          if (t.is_vector != sum.is_vector) throw error("a number added to a vector in " + text(e));
+          if (sum.is_vector) {
+            sum.x = sum.x + t.x;
+            sum.y = sum.y + t.y;
+          } else {
+            sum.s = sum.s + t.s;
+          }
+        }
+        return sum;
+      }
+      case CanonicalForm::Kind::Product: {
+        const auto factors = n.factors;
+        Value p;
+        for (size_t i = 0; i < factors.size(); ++i) {
+          const auto [base_id, k] = factors[i];
+          Value f = form_value(base_id, e, b);
+          if (k != 1) {
+            if (f.is_vector) throw error("power of a vector: " + text(e) + " (use norm2 or dot)");
+            RatePoly<T> r = constant(1);
+            for (int q = 0; q < std::abs(k); ++q) r = r * f.s;
+            if (k > 0) {
+              f = Value::number(std::move(r));
+            } else {
+              RatePoly<T> inverse = constant(1) / r;  // tests r for zero
+              divisors_.push_back(r.constant());
+              f = Value::number(std::move(inverse));
+            }
+          }
+          p = i == 0 ? std::move(f) : multiply(p, f, e);
+        }
+        return p;
+      }
+    }
     throw error("cannot evaluate " + text(e));
   }
 

@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "linkproof/symbolic/canonical_form.h"
+
 namespace linkproof {
 
 /// Where a character of an expression is in its file: (line, column), both 1-based.
@@ -73,10 +75,12 @@ const GiNaC::symbol& symbol_of(int word_code);
 int code_of_symbol(const GiNaC::ex& e);
 /// If e is a call of a vocabulary word: its code and arguments; else code -1.
 int code_of_call(const GiNaC::ex& e);
-/// The operands of a sum or product in an order that does not depend on the run. GiNaC orders
-/// them by hash values that depend on addresses (ASLR), so summing in GiNaC's order made
-/// floating-point results and bounds differ between runs of the same program.
-const std::vector<size_t>& canonical_order(const GiNaC::ex& e);
+/// The canonical form (symbolic/canonical_form.h, with atoms: vocabulary symbols and calls) in
+/// which claim expressions are evaluated. GiNaC orders the operands of sums and products, and
+/// places signs and numeric factors between them, by hash values that depend on addresses (ASLR)
+/// and symbol serials, so evaluating its trees as stored gave other floating-point results and
+/// bounds in other runs. One per process, on the thread that uses GiNaC.
+CanonicalForm& canonical_form();
 }  // namespace claim_atoms
 
 }  // namespace linkproof

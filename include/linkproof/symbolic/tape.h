@@ -6,9 +6,13 @@
 // (d) "evaluation of the symbolic expression", in exact, tracked or plain floating arithmetic
 // through one code path.
 //
-// The operands of every sum and product are evaluated in a canonical order (canonical_order.h),
-// not in GiNaC's, which depends on addresses: floating-point results and error bounds are the
-// same bytes in every run.
+// What is compiled is the canonical form of the expressions (canonical_form.h), not GiNaC's
+// trees: GiNaC's operand order and its placement of signs and numeric factors between sums and
+// products depend on addresses (ASLR) and symbol serials. Two runs, processes or symbol-creation
+// orders that compile equal expressions get the same tape, instruction for instruction, so
+// floating-point results and error bounds are the same bytes. Every sum is evaluated as
+// content * (sum with coprime integer coefficients), its operands and those of every product in
+// the canonical order.
 #pragma once
 
 #include <ginac/ginac.h>
