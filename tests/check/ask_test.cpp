@@ -28,8 +28,7 @@ std::string ask_error(const std::string& ask) {
   return "";
 }
 
-// One engine for every check of a test: in floating point, two engines of one process can
-// derive equal expressions in another structure and round differently (issue 13, determinism).
+// One engine for every check: each n is derived once per process.
 PolygonCheck run(const PolygonScene& s, Arithmetic a = Arithmetic::Exact) {
   static GroundTruthEngine engine;
   return check_polygon(engine, asked_claims(dijksman1966::catalogue(), s.ask, s.source), s.name, s.polygon, s.rates, a,
