@@ -20,9 +20,8 @@ RankResult state_of(const RowEchelon<Rational>& e, double seconds) {
 /// The triangle relations of m bodies, reduced, grown one body at a time and kept between calls
 /// (`count --n 3..200` ranks every m in turn: C(200,3) rows in all instead of the sum of C(m,3)).
 /// Its columns are numbered by body added: rate (i, k), i < k, is column k(k-1)/2 + i, so that
-/// body k's rates are appended; triangle_basis() renumbers them as RelativeRates(m) does. The
-/// relations are those of triangle_relations(), grouped by their largest body; the rank of a
-/// system does not depend on the order of its rows or columns.
+/// body k's rates are appended. The relations are those of triangle_relations(), grouped by their
+/// largest body; the rank of a system does not depend on the order of its rows or columns.
 struct TriangleBasis {
   int bodies = 0;
   RowEchelon<Rational> echelon{0};
@@ -45,14 +44,28 @@ const RowEchelon<Rational>& grown_triangle_basis(int m) {
   return cache.echelon;
 }
 
-/// The reduced triangle relations of m bodies in RelativeRates(m)'s columns.
-RowEchelon<Rational> triangle_basis(const RelativeRates& rates) {
-  const int m = rates.bodies();
-  const RowEchelon<Rational>& grown = grown_triangle_basis(m);
-  std::vector<int> to(static_cast<size_t>(rates.columns()));
-  for (int k = 1; k < m; ++k)
-    for (int i = 0; i < k; ++i) to[static_cast<size_t>(appended_column(i, k))] = rates.column(i, k);
-  return grown.renumbered(to);
+/// Adds the relations of `family` restricted to the free rates to `e` (m - 1 columns). Why that
+/// ranks the family modulo the triangle relations of m bodies, when those are known to leave
+/// exactly the rates of W = {x_ik = y_k - y_i : y_0 = 0} free (rank[triangles] =
+/// m(m-1)/2 - (m-1)). Every rate of W satisfies the triangle relations, so their span lies in
+/// the annihilator of W, and with that rank it *is* the annihilator. The rows of [triangles;
+/// family] modulo that span are then the rows of the family restricted to W (the quotient of the
+/// dual by the annihilator of W is the dual of W): rank[triangles; family] - rank[triangles] is
+/// the rank of the restricted family, an (m-1)-column system, and the same for the augmented
+/// matrices (W x R, with the constant kept). This replaces reducing the family against a copy of
+/// the C(m,3)-row triangle basis (most of `count` at large n) by O(entries) work per relation.
+void add_restricted_to_free_rates(RowEchelon<Rational>& e, const RelativeRates& rates,
+                                  const std::vector<RateRelation>& family) {
+  LINKPROOF_ASSERT(e.columns() == rates.bodies() - 1, "add_restricted_to_free_rates: column count");
+  for (const RateRelation& r : family) {  // column k-1 is y_k, k = 1..m-1
+    std::vector<std::pair<int, Rational>> entries;
+    for (const auto& [col, a] : r.row) {
+      const auto [i, k] = rates.bodies_of(col);  // a * x_ik = a * y_k - a * y_i
+      entries.emplace_back(k - 1, a);
+      if (i > 0) entries.emplace_back(i - 1, -a);
+    }
+    e.add(make_sparse_row(std::move(entries)), r.rhs);
+  }
 }
 
 }  // namespace
@@ -65,7 +78,8 @@ RankResult add_and_rank(RowEchelon<Rational>& echelon, const std::vector<RateRel
 
 RankResult count_triangle_relations(int n) {
   const auto t0 = std::chrono::steady_clock::now();
-  const RowEchelon<Rational> e = triangle_basis(RelativeRates(n));
+  // The rank does not depend on the numbering of the columns: the grown basis is ranked as it is.
+  const RowEchelon<Rational>& e = grown_triangle_basis(n);
   return state_of(e, seconds_since(t0));
 }
 
@@ -92,32 +106,36 @@ std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>&
     companion.push_back(std::move(acc[1]));
   }
 
-  const auto t0 = std::chrono::steady_clock::now();
-  const RowEchelon<Rational> tri = triangle_basis(rates);
-  const RankResult tri_state = state_of(tri, seconds_since(t0));
+  const RankResult tri_state = count_triangle_relations(n);
+  // The restriction to W below rests on the triangles leaving exactly n - 1 rates free.
+  LINKPROOF_ASSERT(tri_state.rank == rates.columns() - (n - 1) && tri_state.consistent(),
+                   "count_fixed_side_relations: the triangle relations do not have rank (n-1)(n-2)/2");
 
   std::vector<FixedSideFamily> out;
-  // `start` (a reduced basis holding the triangles, and earlier relations `earlier` long) plus
-  // `family`: the (22)+companion family continues from the (22) one (the rank of a set of
-  // relations does not depend on their order), so the (22) rows are reduced once.
-  const auto rank_family = [&](std::string name, const RowEchelon<Rational>& start, double earlier_seconds,
-                               const std::vector<RateRelation>& family, long size) {
+  // `restricted` holds the family rows restricted to W (earlier relations `earlier` long, taking
+  // `earlier_seconds`): the (22)+companion family continues from the (22) one (the rank of a set
+  // of relations does not depend on their order), so the (22) rows are reduced once.
+  const auto rank_family = [&](std::string name, RowEchelon<Rational> restricted, long earlier, double earlier_seconds,
+                               const std::vector<RateRelation>& family) {
     const auto t1 = std::chrono::steady_clock::now();
-    RowEchelon<Rational> e = start;
-    add_and_rank(e, family);
+    RowEchelon<Rational> e = std::move(restricted);
+    add_restricted_to_free_rates(e, rates, family);
     FixedSideFamily fam;
     fam.name = std::move(name);
-    fam.relations = size;
+    fam.relations = earlier + static_cast<long>(family.size());
     fam.triangles = tri_state;
-    fam.combined = state_of(e, earlier_seconds + seconds_since(t1));
+    fam.combined = {tri_state.relations + fam.relations, rates.columns(), tri_state.rank + e.rank(),
+                    tri_state.augmented_rank + e.augmented_rank(),
+                    tri_state.seconds + earlier_seconds + seconds_since(t1)};
     out.push_back(std::move(fam));
     return e;
   };
-  rank_family("velocity (5),(6)", tri, tri_state.seconds, velocity, static_cast<long>(velocity.size()));
-  const RowEchelon<Rational> with_eq22 =
-      rank_family("acceleration (22)", tri, tri_state.seconds, eq22, static_cast<long>(eq22.size()));
-  rank_family("acceleration (22)+companion", with_eq22, out.back().combined.seconds, companion,
-              static_cast<long>(eq22.size() + companion.size()));
+  const RowEchelon<Rational> none(n - 1);
+  rank_family("velocity (5),(6)", none, 0, 0, velocity);
+  const RowEchelon<Rational> with_eq22 = rank_family("acceleration (22)", none, 0, 0, eq22);
+  const long eq22_rows = out.back().relations;
+  const double eq22_seconds = out.back().combined.seconds - tri_state.seconds;
+  rank_family("acceleration (22)+companion", with_eq22, eq22_rows, eq22_seconds, companion);
   return out;
 }
 

@@ -27,7 +27,7 @@ TEST(TriangleBasisReuse, RanksAreThoseOfAFreshRankingWhenNGoesUpDownAndRepeats) 
 
 TEST(TriangleBasisReuse, FamilyRanksAreThoseOfRankingEachFamilyFromTheTriangles) {
   const std::uint64_t seed = 5;
-  for (int n : {5, 8, 6}) {
+  for (int n : {5, 8, 6, 4, 11}) {
     // A polygon without two consecutive parallel sides: no choice of the fixed side is a dead centre.
     RandomPolygonCase c;
     for (int index = 0;; index += 3) {

@@ -9,6 +9,9 @@
 //    acceleration relations (22) + companion), each family ranked *modulo the triangle
 //    relations of the n sides*: rank[triangles; family] - rank[triangles]. That is the number
 //    of independent constraints the family puts on the n - 1 independent rates of the polygon.
+//    Computed as the rank of the family restricted to the n - 1 rates the triangles leave free
+//    (x_ik = y_k - y_i), which equals that difference once rank[triangles] is (n-1)(n-2)/2
+//    (counting.cpp says why); tests compare it with ranking [triangles; family] directly.
 //    The acceleration families are affine (their constants depend on the velocities): the
 //    linear part and the augmented matrix are ranked; equal ranks mean the family is consistent.
 #pragma once
