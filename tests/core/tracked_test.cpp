@@ -223,3 +223,28 @@ TEST(TrackedMp, TinyAndHugeMagnitudesKeepTightBounds) {
 
 }  // namespace
 }  // namespace linkproof
+
+namespace linkproof {
+namespace {
+
+// from_int takes a short cut for tracked IEEE types (the claim evaluator makes a 1 per rate
+// variable); it must give exactly what the conversion through a Rational gives, radius included,
+// on both sides of 2^53 (past it the short cut does not apply and the radius is the rounding).
+template <class F>
+void expect_from_int_is_from_rational() {
+  const long big = 1L << 53;
+  for (long k : {0L, 1L, -1L, 7L, -12345L, big - 1, big, -big, big + 1, -(big + 1), big * 4 + 3}) {
+    const Tracked<F> fast = from_int<Tracked<F>>(k);
+    const Tracked<F> slow = ScalarTraits<Tracked<F>>::from_rational(Rational(k));
+    EXPECT_EQ(fast.v, slow.v) << "k = " << k;
+    EXPECT_TRUE(fast.e == slow.e) << "k = " << k;
+  }
+}
+
+TEST(TrackedFromInt, SmallIntegersAreExactWithZeroRadiusAsThroughARational) {
+  expect_from_int_is_from_rational<double>();
+  expect_from_int_is_from_rational<long double>();
+}
+
+}  // namespace
+}  // namespace linkproof

@@ -97,12 +97,18 @@ class ClaimEvaluator {
   static RatePoly<T> constant(const T& x) { return RatePoly<T>(x); }
   static RatePoly<T> constant(long k) { return RatePoly<T>(from_int<T>(k)); }
 
+  /// A rational constant of the claim in T; small integers (most constants) the cheap way.
+  static T number(const GiNaC::numeric& q) {
+    if (q.is_integer() && GiNaC::abs(q) <= GiNaC::numeric(1L << 53)) return from_int<T>(q.to_long());
+    return from_rational<T>(cln::the<cln::cl_RA>(q.to_cl_N()));
+  }
+
   Value value(const GiNaC::ex& e, const IndexBindings& b) {
     using namespace GiNaC;
     if (is_exactly_a<numeric>(e)) {
       const numeric& q = ex_to<numeric>(e);
       if (!q.is_rational()) throw error("the number " + text(e) + " is not rational");
-      return Value::number(constant(from_rational<T>(cln::the<cln::cl_RA>(q.to_cl_N()))));
+      return Value::number(constant(number(q)));
     }
     if (is_exactly_a<power>(e)) {
       const ex& k = e.op(1);
@@ -123,7 +129,7 @@ class ClaimEvaluator {
   /// c * v; v itself if c is 1.
   Value scaled(Value v, const GiNaC::numeric& c, const GiNaC::ex& e) {
     if (c.is_equal(GiNaC::numeric(1))) return v;
-    const Value k = Value::number(constant(from_rational<T>(cln::the<cln::cl_RA>(c.to_cl_N()))));
+    const Value k = Value::number(constant(number(c)));
     return multiply(k, v, e);
   }
 
