@@ -153,29 +153,6 @@ class RowEchelon {
     rows_with_column_.resize(static_cast<size_t>(columns_));
   }
 
-  /// The same system with unknown c renamed to to[c] (a permutation of 0 .. columns() - 1):
-  /// same rank, relations and consistency. The basis stays reduced (that property does not
-  /// depend on the order of the columns), so no row is eliminated again.
-  RowEchelon renumbered(const std::vector<int>& to) const {
-    LINKPROOF_ASSERT(static_cast<int>(to.size()) == columns_, "RowEchelon::renumbered: wrong size");
-    RowEchelon out(columns_);
-    out.relations_ = relations_;
-    out.inconsistent_ = inconsistent_;
-    out.basis_.reserve(basis_.size());
-    for (const Basis& bs : basis_) {
-      SparseRow<T> row;
-      row.reserve(bs.row.size());
-      for (const auto& e : bs.row) row.emplace_back(to[static_cast<size_t>(e.first)], e.second);
-      std::sort(row.begin(), row.end(), [](const auto& a, const auto& c) { return a.first < c.first; });
-      const int id = static_cast<int>(out.basis_.size());
-      const int pivot = to[static_cast<size_t>(bs.pivot)];
-      out.pivot_row_[static_cast<size_t>(pivot)] = id;
-      out.basis_.push_back({pivot, std::move(row), bs.rhs});
-      out.index_row(id);
-    }
-    return out;
-  }
-
   /// The value of unknown `col` if the relations fix it (its pivot row has no free column),
   /// otherwise nullopt. Meaningful only while the system is consistent.
   std::optional<T> determined_value(int col) const {
