@@ -97,9 +97,10 @@ class ClaimEvaluator {
   static RatePoly<T> constant(const T& x) { return RatePoly<T>(x); }
   static RatePoly<T> constant(long k) { return RatePoly<T>(from_int<T>(k)); }
 
-  /// A rational constant of the claim in T; small integers (most constants) the cheap way.
+  /// A rational constant of the claim in T; integers (most constants) through from_int, which
+  /// knows which of them convert exactly and cheaply.
   static T number(const GiNaC::numeric& q) {
-    if (q.is_integer() && GiNaC::abs(q) <= GiNaC::numeric(1L << 53)) return from_int<T>(q.to_long());
+    if (q.is_integer() && GiNaC::abs(q) < GiNaC::numeric(1L << 62)) return from_int<T>(q.to_long());
     return from_rational<T>(cln::the<cln::cl_RA>(q.to_cl_N()));
   }
 
