@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -14,13 +15,36 @@
 #include "linkproof/claims/vocabulary.h"
 #include "linkproof/core/error.h"
 
+namespace linkproof {
+namespace {
+// A word's call printed as the claim file writes it (r[1], dot(a, b)), so that messages about a
+// claim quote the claim and not its internal form (lp_word1(32,1)).
+void print_word(const GiNaC::ex& code, std::initializer_list<const GiNaC::ex*> args, const GiNaC::print_context& c) {
+  const Word& w = vocabulary().at(static_cast<size_t>(GiNaC::ex_to<GiNaC::numeric>(code).to_int()));
+  const bool indexed = w.kind != WordKind::VectorFunction && w.kind != WordKind::Sum;
+  c.s << w.name << (indexed ? "[" : "(");
+  const char* separator = "";
+  for (const GiNaC::ex* a : args) {
+    c.s << separator;
+    a->print(c);
+    separator = ", ";
+  }
+  c.s << (indexed ? "]" : ")");
+}
+void print_word1(const GiNaC::ex& code, const GiNaC::ex& a, const GiNaC::print_context& c) { print_word(code, {&a}, c); }
+void print_word2(const GiNaC::ex& code, const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::print_context& c) {
+  print_word(code, {&a, &b}, c);
+}
+}  // namespace
+}  // namespace linkproof
+
 namespace GiNaC {
 // A call of a vocabulary word: lp_word1(code, a) and lp_word2(code, a, b). GiNaC leaves them
 // unevaluated (no eval method), so they are plain tree nodes for the claim evaluator.
 DECLARE_FUNCTION_2P(lp_word1)
 DECLARE_FUNCTION_3P(lp_word2)
-REGISTER_FUNCTION(lp_word1, dummy())
-REGISTER_FUNCTION(lp_word2, dummy())
+REGISTER_FUNCTION(lp_word1, print_func<print_dflt>(linkproof::print_word1))
+REGISTER_FUNCTION(lp_word2, print_func<print_dflt>(linkproof::print_word2))
 }  // namespace GiNaC
 
 namespace linkproof {

@@ -7,8 +7,8 @@ namespace linkproof {
 std::string monomial_label(const Monomial& m) {
   if (m.empty()) return "1";
   std::string s;
-  for (size_t i = 0; i < m.size();) {
-    size_t k = i;
+  for (int i = 0; i < m.size();) {
+    int k = i;
     while (k < m.size() && m[k] == m[i]) ++k;
     const RateVariable v = RateVariable::from_id(m[i]);
     if (!s.empty()) s += "*";
@@ -21,7 +21,7 @@ std::string monomial_label(const Monomial& m) {
 
 std::vector<int> monomial_indices(const Monomial& m) {
   std::vector<int> v;
-  for (int id : m) v.push_back(RateVariable::from_id(id).index);
+  for (int i = 0; i < m.size(); ++i) v.push_back(RateVariable::from_id(m[i]).index);
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
   return v;

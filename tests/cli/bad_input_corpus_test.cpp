@@ -94,6 +94,23 @@ const std::vector<Case>& corpus() {
       {"NestedPowersBeyondTheDegreeBudget",
        [] { return std::vector<std::string>{"check-claim", write_temp("pow4.yaml", claim_file("((omega_out^64)^64)^64"))}; },
        2, "degree", "", ""},
+      // A claim that is not well formed is the input's fault: exit 2, quoting the claim as
+      // written (these were exit 3, "internal error", and quoted lp_word1(32,1)).
+      {"AVectorWhereANumberIsExpected",
+       [] { return std::vector<std::string>{"check-claim", write_temp("vec.yaml", claim_file("r[1]"))}; },
+       2, "a vector where a number is expected: r[1]", "", ""},
+      {"DivisionByTheRates",
+       [] { return std::vector<std::string>{"check-claim", write_temp("divrate.yaml", claim_file("1/omega[1]"))}; },
+       2, "division by an expression that contains rates", "", ""},
+      {"AVectorClaimOnAScene",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("vec2.yaml", claim_file("dot(r[1], r[2]) * K[1]")),
+                                         "--scene", source_file("verify/scenes/pentagon.yaml")};
+       },
+       2, "a vector where a number is expected", "", ""},
+      {"ATermOfDegreeNineInTheRates",  // RatePoly's monomials hold 8 rates (docs/limits.md)
+       [] { return std::vector<std::string>{"check-claim", write_temp("deg9.yaml", claim_file("omega[1]^9"))}; },
+       2, "degree 9 in the rates", "", ""},
       {"DevZero", [] { return std::vector<std::string>{"check", "/dev/zero"}; }, 2, "larger than the limit", "", ""},
       {"TenMegabyteScene",
        [] {

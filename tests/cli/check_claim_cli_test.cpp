@@ -45,16 +45,21 @@ TEST(CheckClaimCli, AlwaysUndefinedClaimIsAnErrorNotAPass) {
   EXPECT_EQ(j["exit_status"], 3) << r.out;
 }
 
-// --scene: an evaluation error is not as expected in the JSON summary as in the text.
-TEST(CheckClaimCli, SceneCheckSummaryAgreesWithTheTextOnErrors) {
+// --scene: a user's claim that is not well formed is bad input, refused the same way in text
+// and JSON (it was the verdict error, exit 3, as if linkproof had a bug).
+TEST(CheckClaimCli, SceneCheckRefusesAnIllFormedClaimInTextAndJson) {
   const std::string scene = std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/pentagon.yaml";
-  const std::string file = claim_file("c4.yaml", "r[n-1]", "1");  // a vector: the evaluation errs
+  const std::string file = claim_file("c4.yaml", "r[n-1]", "1");  // a vector where a number is expected
   const CliRun json = run_cli({"check-claim", file, "--scene", scene, "--json"});
-  const auto j = nlohmann::json::parse(json.out);
   const CliRun text = run_cli({"check-claim", file, "--scene", scene});
-  const bool text_flags = text.out.find("UNEXPECTED") != std::string::npos;
-  EXPECT_EQ(j["summary"]["not_as_expected"].get<int>() > 0, text_flags) << json.out << text.out;
-  EXPECT_EQ(json.code, text.code);
+  EXPECT_EQ(text.code, 2) << text.out << text.err;
+  EXPECT_EQ(json.code, 2) << json.out << json.err;
+  EXPECT_NE(text.err.find("claim 'mine'"), std::string::npos) << text.err;
+  EXPECT_NE(text.err.find("a vector where a number is expected"), std::string::npos) << text.err;
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["error"]["kind"], "input") << json.out;
+  EXPECT_EQ(j["error"]["file"], file) << json.out;
+  EXPECT_EQ(j["exit_status"], 2) << json.out;
 }
 
 TEST(CheckClaimCli, StrictMakesProvedForNotAsExpected) {

@@ -266,6 +266,53 @@ class ClaimEvaluator {
     return k;
   }
 
+  /// The words the evaluator tells apart, looked up once: the inner loops of a sum compare
+  /// pointers, not names (string comparisons were ~10 % of a double check).
+  struct Words {
+    const Word* omega_out = &word_named("omega_out");
+    const Word* omega_cpl = &word_named("omega_cpl");
+    const Word* omega_dot_out = &word_named("omega_dot_out");
+    const Word* omega_dot_cpl = &word_named("omega_dot_cpl");
+    const Word* D = &word_named("D");
+    const Word* cot_phi = &word_named("cot_phi");
+    const Word* rho = &word_named("rho");
+    const Word* rho_companion = &word_named("rho_companion");
+    const Word* side_omega_dot = &word_named("side_omega_dot");
+    const Word* omega = &word_named("omega");
+    const Word* omega_dot = &word_named("omega_dot");
+    const Word* i_out = &word_named("i_out");
+    const Word* i_cpl = &word_named("i_cpl");
+    const Word* cot_beta = &word_named("cot_beta");
+    const Word* cot_gamma = &word_named("cot_gamma");
+    const Word* lambda = &word_named("lambda");
+    const Word* mu = &word_named("mu");
+    const Word* Kp = &word_named("Kp");
+    const Word* Q = &word_named("Q");
+    const Word* i_out_closed = &word_named("i_out_closed");
+    const Word* i_cpl_closed = &word_named("i_cpl_closed");
+    const Word* lambda_closed = &word_named("lambda_closed");
+    const Word* mu_closed = &word_named("mu_closed");
+    const Word* fourbar_ratio_out = &word_named("fourbar_ratio_out");
+    const Word* fourbar_ratio_cpl = &word_named("fourbar_ratio_cpl");
+    const Word* fourbar_omega_out = &word_named("fourbar_omega_out");
+    const Word* fourbar_omega_cpl = &word_named("fourbar_omega_cpl");
+    const Word* fourbar_omega_dot_out = &word_named("fourbar_omega_dot_out");
+    const Word* fourbar_omega_dot_cpl = &word_named("fourbar_omega_dot_cpl");
+    const Word* r = &word_named("r");
+    const Word* K = &word_named("K");
+    const Word* dot = &word_named("dot");
+    const Word* norm2 = &word_named("norm2");
+    const Word* perp = &word_named("perp");
+    const Word* vx = &word_named("vx");
+    const Word* vy = &word_named("vy");
+    const Word* sum_j = &word_named("sum_j");
+    const Word* sum_pairs = &word_named("sum_pairs");
+  };
+  static const Words& words() {
+    static const Words w;
+    return w;
+  }
+
   const FourBarConstruction<T>& construction(int j) {
     return c_.construction_for(reading_.construction)[static_cast<size_t>(j - 1)];
   }
@@ -273,31 +320,31 @@ class ClaimEvaluator {
   Value global(const Word& w, const IndexBindings&) {
     const std::string& s = w.name;
     if (w.kind == WordKind::Index) throw error("'" + s + "' is an index, not a number");
-    if (s == "omega_out" || s == "omega_cpl") {
+    if (&w == words().omega_out || &w == words().omega_cpl) {
       const auto& vc = c_.velocity_coefficients().get();
-      const auto& coef = s == "omega_out" ? vc.first : vc.second;
+      const auto& coef = &w == words().omega_out ? vc.first : vc.second;
       RatePoly<T> p;
       for (int j = 1; j <= c_.inputs(); ++j)
         p += constant(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
       return Value::number(p);
     }
-    if (s == "omega_dot_out" || s == "omega_dot_cpl") {
-      const auto& tc = s == "omega_dot_out" ? c_.coefficients().get().first : c_.coefficients().get().second;
+    if (&w == words().omega_dot_out || &w == words().omega_dot_cpl) {
+      const auto& tc = &w == words().omega_dot_out ? c_.coefficients().get().first : c_.coefficients().get().second;
       return Value::number(acceleration_poly(tc, 0));
     }
     const ClosedForms<T>& cf = c_.closed().get();
-    if (s == "D") return Value::number(constant(cf.D));
+    if (&w == words().D) return Value::number(constant(cf.D));
     if (reading_.signed_phi) {
-      if (s == "cot_phi") return Value::number(constant(cf.cot_phi));
-      if (s == "rho") return Value::number(constant(cf.rho));
-      if (s == "rho_companion") return Value::number(constant(cf.rho_companion));
+      if (&w == words().cot_phi) return Value::number(constant(cf.cot_phi));
+      if (&w == words().rho) return Value::number(constant(cf.rho));
+      if (&w == words().rho_companion) return Value::number(constant(cf.rho_companion));
     } else {
       // The unsigned drawn angle |phi| (erratum A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
       const T abs_d = abs_value(cf.D);
       const Vec2<T> a = c_.r(c_.n - 2), bb = c_.r(c_.n - 1);
-      if (s == "cot_phi") return Value::number(constant(dot(a, bb) / abs_d));
-      if (s == "rho") return Value::number(constant(norm2(a) / abs_d));
-      if (s == "rho_companion") return Value::number(constant(norm2(bb) / abs_d));
+      if (&w == words().cot_phi) return Value::number(constant(dot(a, bb) / abs_d));
+      if (&w == words().rho) return Value::number(constant(norm2(a) / abs_d));
+      if (&w == words().rho_companion) return Value::number(constant(norm2(bb) / abs_d));
     }
     throw error("'" + s + "' is not a number");
   }
@@ -325,51 +372,52 @@ class ClaimEvaluator {
     const std::string& s = w.name;
     const GiNaC::ex& a0 = e.op(1);
     switch (w.kind) {
-      case WordKind::Sum: return Value::number(sum(s, a0, b));
-      case WordKind::VectorFunction: return vector_function(s, e, b);
-      case WordKind::InputScalar: return Value::number(input_scalar(s, index(w, a0, b, true)));
+      case WordKind::Sum: return Value::number(sum(w, a0, b));
+      case WordKind::VectorFunction: return vector_function(w, e, b);
+      case WordKind::InputScalar: return Value::number(input_scalar(w, index(w, a0, b, true)));
       case WordKind::InputVector: {
         const int j = index(w, a0, b, true);
-        if (s == "Kp") return Value::vec(construction(j).k_prime);
-        if (s == "Q") return Value::vec(construction(j).q.get());
+        if (&w == words().Kp) return Value::vec(construction(j).k_prime);
+        if (&w == words().Q) return Value::vec(construction(j).q.get());
         return Value::vec(construction(j).p_prime.get());
       }
       case WordKind::SideVector: {
         const int k = index(w, a0, b, false);
-        if (s == "r") return Value::vec(c_.r(k));
-        if (s == "K") return Value::vec(c_.polygon.joint(k));
+        if (&w == words().r) return Value::vec(c_.r(k));
+        if (&w == words().K) return Value::vec(c_.polygon.joint(k));
         return acceleration_of_joint(k);
       }
       case WordKind::SideScalar: {
         const int k = index(w, a0, b, false);
-        return Value::number(side_rate(k, s == "side_omega_dot"));
+        return Value::number(side_rate(k, &w == words().side_omega_dot));
       }
       default: throw error("'" + s + "' cannot be called");
     }
   }
 
-  RatePoly<T> input_scalar(const std::string& s, int j) {
+  RatePoly<T> input_scalar(const Word& word, int j) {
+    const std::string& s = word.name;
     const auto k = static_cast<size_t>(j - 1);
-    if (s == "omega") return RatePoly<T>::variable({j, RateVariable::Omega});
-    if (s == "omega_dot") return RatePoly<T>::variable({j, RateVariable::OmegaDot});
-    if (s == "i_out") return constant(construction(j).i_out.get());
-    if (s == "i_cpl") return constant(construction(j).i_cpl.get());
-    if (s == "cot_beta") return constant(construction(j).cot_beta.get());
-    if (s == "cot_gamma") return constant(construction(j).cot_gamma.get());
-    if (s == "lambda") return constant(construction(j).lambda.get());
-    if (s == "mu") return constant(construction(j).mu.get());
-    if (s == "i_out_closed") return constant(c_.closed().get().i_out[k]);
-    if (s == "i_cpl_closed") return constant(c_.closed().get().i_cpl[k]);
-    if (s == "lambda_closed") return constant(c_.closed().get().lambda[k]);
-    if (s == "mu_closed") return constant(c_.closed().get().mu[k]);
+    if (&word == words().omega) return RatePoly<T>::variable({j, RateVariable::Omega});
+    if (&word == words().omega_dot) return RatePoly<T>::variable({j, RateVariable::OmegaDot});
+    if (&word == words().i_out) return constant(construction(j).i_out.get());
+    if (&word == words().i_cpl) return constant(construction(j).i_cpl.get());
+    if (&word == words().cot_beta) return constant(construction(j).cot_beta.get());
+    if (&word == words().cot_gamma) return constant(construction(j).cot_gamma.get());
+    if (&word == words().lambda) return constant(construction(j).lambda.get());
+    if (&word == words().mu) return constant(construction(j).mu.get());
+    if (&word == words().i_out_closed) return constant(c_.closed().get().i_out[k]);
+    if (&word == words().i_cpl_closed) return constant(c_.closed().get().i_cpl[k]);
+    if (&word == words().lambda_closed) return constant(c_.closed().get().lambda[k]);
+    if (&word == words().mu_closed) return constant(c_.closed().get().mu[k]);
     const FourBarTruth<T>& fb = c_.four_bar(static_cast<int>(k) + 1);
     const auto w = RatePoly<T>::variable({j, RateVariable::Omega});
-    if (s == "fourbar_ratio_out") return constant(fb.ratio_out.get());
-    if (s == "fourbar_ratio_cpl") return constant(fb.ratio_cpl.get());
-    if (s == "fourbar_omega_out") return constant(fb.ratio_out.get()) * w;
-    if (s == "fourbar_omega_cpl") return constant(fb.ratio_cpl.get()) * w;
-    if (s == "fourbar_omega_dot_out") return acceleration_poly(fb.coefficients.get().first, j);
-    if (s == "fourbar_omega_dot_cpl") return acceleration_poly(fb.coefficients.get().second, j);
+    if (&word == words().fourbar_ratio_out) return constant(fb.ratio_out.get());
+    if (&word == words().fourbar_ratio_cpl) return constant(fb.ratio_cpl.get());
+    if (&word == words().fourbar_omega_out) return constant(fb.ratio_out.get()) * w;
+    if (&word == words().fourbar_omega_cpl) return constant(fb.ratio_cpl.get()) * w;
+    if (&word == words().fourbar_omega_dot_out) return acceleration_poly(fb.coefficients.get().first, j);
+    if (&word == words().fourbar_omega_dot_cpl) return acceleration_poly(fb.coefficients.get().second, j);
     throw error("'" + s + "' is not an input quantity");
   }
 
@@ -404,31 +452,32 @@ class ClaimEvaluator {
     return Value::vec(ax, ay);
   }
 
-  Value vector_function(const std::string& s, const GiNaC::ex& e, const IndexBindings& b) {
+  Value vector_function(const Word& word, const GiNaC::ex& e, const IndexBindings& b) {
+    const std::string& s = word.name;
     const Value a = value(e.op(1), b);
     if (!a.is_vector) throw error(s + "(...) needs a vector argument: " + text(e));
-    if (s == "norm2") return Value::number(a.x * a.x + a.y * a.y);
-    if (s == "perp") return Value::vec(-a.y, a.x);
-    if (s == "vx") return Value::number(a.x);
-    if (s == "vy") return Value::number(a.y);
+    if (&word == words().norm2) return Value::number(a.x * a.x + a.y * a.y);
+    if (&word == words().perp) return Value::vec(-a.y, a.x);
+    if (&word == words().vx) return Value::number(a.x);
+    if (&word == words().vy) return Value::number(a.y);
     const Value c = value(e.op(2), b);
     if (!c.is_vector) throw error(s + "(...) needs vector arguments: " + text(e));
-    if (s == "dot") return Value::number(a.x * c.x + a.y * c.y);
+    if (&word == words().dot) return Value::number(a.x * c.x + a.y * c.y);
     return Value::number(a.x * c.y - a.y * c.x);  // cross
   }
 
-  RatePoly<T> sum(const std::string& s, const GiNaC::ex& body, const IndexBindings& b) {
+  RatePoly<T> sum(const Word& word, const GiNaC::ex& body, const IndexBindings& b) {
+    const std::string& s = word.name;
     const int m = c_.inputs();
     RatePoly<T> total;
-    if (s == "sum_j") {
+    if (&word == words().sum_j) {
       for (int j = 1; j <= m; ++j) {
         IndexBindings inner = b;
         inner.j = j;
         RatePoly<T> t;
         if (!summand(body, inner, t, {j})) continue;
         for (const auto& [mono, coef] : t.terms()) {
-          const auto idx = monomial_indices(mono);
-          if (std::find(idx.begin(), idx.end(), j) == idx.end()) {
+          if (!involves_input(mono, j)) {
             note("sum_j(...) has a term without a rate of j (" + monomial_label(mono) + "): its total depends on n");
             break;
           }
@@ -437,7 +486,7 @@ class ClaimEvaluator {
       }
       return total;
     }
-    const bool ordered = s == "sum_pairs";
+    const bool ordered = &word == words().sum_pairs;
     for (int j = 1; j <= m; ++j)
       for (int l = ordered ? 1 : j + 1; l <= m; ++l) {
         if (l == j) continue;
@@ -447,8 +496,7 @@ class ClaimEvaluator {
         RatePoly<T> t;
         if (!summand(body, inner, t, {j, l})) continue;
         for (const auto& [mono, coef] : t.terms()) {
-          const auto idx = monomial_indices(mono);
-          if (std::find(idx.begin(), idx.end(), j) == idx.end() || std::find(idx.begin(), idx.end(), l) == idx.end()) {
+          if (!involves_input(mono, j) || !involves_input(mono, l)) {
             note(s + "(...) has a term without rates of both j and l (" + monomial_label(mono) + ")");
             break;
           }

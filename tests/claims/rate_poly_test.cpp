@@ -1,0 +1,171 @@
+// RatePoly: the flat representation (a fixed-size monomial key, terms sorted when read) must give
+// what a map from monomial to coefficient gives: the terms in the monomials' lexicographic order,
+// one per monomial, the coefficients of one monomial added in the order they arrived.
+#include <gtest/gtest.h>
+
+#include <cln/rational.h>
+#include <cln/rational_io.h>
+
+#include <map>
+#include <random>
+#include <vector>
+
+#include "linkproof/claims/rate_poly.h"
+#include "linkproof/core/error.h"
+
+namespace linkproof {
+namespace {
+
+std::vector<int> ids_of(const Monomial& m) {
+  std::vector<int> v;
+  for (int i = 0; i < m.size(); ++i) v.push_back(m[i]);
+  return v;
+}
+
+TEST(RatePolyMonomial, IdsAreSortedWithRepetitionAndTheDegreeCounted) {
+  const Monomial m{7, 2, 7, 3};
+  EXPECT_EQ(ids_of(m), (std::vector<int>{2, 3, 7, 7}));
+  EXPECT_EQ(m.size(), 4);
+  EXPECT_EQ(Monomial{}.size(), 0);
+  EXPECT_TRUE(Monomial{}.empty());
+  const Monomial eight{9, 1, 8, 2, 7, 3, 6, 4};
+  EXPECT_EQ(eight.size(), 8);
+  EXPECT_EQ(ids_of(eight), (std::vector<int>{1, 2, 3, 4, 6, 7, 8, 9}));
+  EXPECT_EQ(ids_of(Monomial{Monomial::kMaxId}), (std::vector<int>{Monomial::kMaxId}));
+}
+
+TEST(RatePolyMonomial, OrderIsTheLexicographicOrderOfTheIdsWithAPrefixFirst) {
+  // Every monomial of degree <= 3 in ids 0..3 (and some of degree 5..8), compared as the
+  // sorted id vectors the old representation used.
+  std::vector<std::vector<int>> all{{}};
+  for (int a = 0; a < 4; ++a) {
+    all.push_back({a});
+    for (int b = a; b < 4; ++b) {
+      all.push_back({a, b});
+      for (int c = b; c < 4; ++c) all.push_back({a, b, c});
+    }
+  }
+  all.push_back({0, 0, 1, 1, 2});
+  all.push_back({0, 0, 1, 1, 2, 3, 3, 3});
+  all.push_back({0, 0, 1, 1, 2, 3, 3});
+  const auto make = [](const std::vector<int>& v) {
+    Monomial m;
+    for (int id : v) m = Monomial::product(m, Monomial{id});
+    return m;
+  };
+  for (const auto& a : all)
+    for (const auto& b : all) {
+      EXPECT_EQ(make(a) < make(b), a < b) << ::testing::PrintToString(a) << " vs " << ::testing::PrintToString(b);
+      EXPECT_EQ(make(a) == make(b), a == b);
+    }
+}
+
+TEST(RatePolyMonomial, ProductMergesTheIdsAndRefusesADegreeAboveTheLimit) {
+  EXPECT_EQ(ids_of(Monomial::product(Monomial{1, 4}, Monomial{2, 4, 5})), (std::vector<int>{1, 2, 4, 4, 5}));
+  EXPECT_EQ(ids_of(Monomial::product(Monomial{}, Monomial{3})), (std::vector<int>{3}));
+  const Monomial four{1, 1, 1, 1}, five{2, 2, 2, 2, 2};
+  EXPECT_EQ(Monomial::product(four, Monomial{1, 1, 1, 1}).size(), 8);
+  try {
+    (void)Monomial::product(four, five);
+    FAIL() << "a term of degree 9 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("degree 9 in the rates"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((Monomial{1, 1, 1, 1, 1, 1, 1, 1, 1}), InputError);
+}
+
+TEST(RatePolyMonomial, LabelsAndIndicesReadTheIds) {
+  const int w1 = RateVariable{1, RateVariable::Omega}.id(), wd2 = RateVariable{2, RateVariable::OmegaDot}.id();
+  EXPECT_EQ(monomial_label(Monomial{}), "1");
+  EXPECT_EQ(monomial_label(Monomial{w1, w1}), "omega[1]^2");
+  EXPECT_EQ(monomial_label(Monomial{wd2, w1}), "omega[1]*omega_dot[2]");
+  EXPECT_EQ(monomial_indices(Monomial{wd2, w1, w1}), (std::vector<int>{1, 2}));
+  EXPECT_TRUE(involves_input(Monomial{wd2, w1}, 2));
+  EXPECT_TRUE(involves_input(Monomial{wd2, w1}, 1));
+  EXPECT_FALSE(involves_input(Monomial{wd2, w1}, 3));
+  EXPECT_FALSE(involves_input(Monomial{}, 1));
+}
+
+/// The reference: the map the representation replaced, fed the same additions in the same order.
+using Reference = std::map<std::vector<int>, double>;
+
+TEST(RatePolyTerms, RandomSumsAndProductsGiveTheMapsTermsBitForBit) {
+  const unsigned seed = 20261124;
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> id(2, 9), count(0, 6);
+  std::uniform_real_distribution<double> coef(-1, 1);
+  for (int round = 0; round < 200; ++round) {
+    // Two random polynomials, built term by term in an unsorted order with repeated monomials.
+    RatePoly<double> p[2];
+    Reference ref[2];
+    for (int s = 0; s < 2; ++s)
+      for (int t = count(rng); t > 0; --t) {
+        std::vector<int> ids;
+        for (int d = count(rng) % 3; d > 0; --d) ids.push_back(id(rng));
+        std::sort(ids.begin(), ids.end());
+        const double c = coef(rng);
+        RatePoly<double> term(c);
+        for (int i : ids) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
+        p[s] += term;
+        auto [it, fresh] = ref[s].emplace(ids, c);
+        if (!fresh) it->second = it->second + c;
+      }
+    // The product, term by term as the map did it.
+    Reference prod;
+    for (const auto& [ma, ca] : ref[0])
+      for (const auto& [mb, cb] : ref[1]) {
+        std::vector<int> m = ma;
+        m.insert(m.end(), mb.begin(), mb.end());
+        std::sort(m.begin(), m.end());
+        auto [it, fresh] = prod.emplace(m, ca * cb);
+        if (!fresh) it->second = it->second + ca * cb;
+      }
+    Reference sum = ref[0];
+    for (const auto& [m, c] : ref[1]) {
+      auto [it, fresh] = sum.emplace(m, c);
+      if (!fresh) it->second = it->second + c;
+    }
+    const auto expect_same = [&](const RatePoly<double>& got, const Reference& want, const char* what) {
+      ASSERT_EQ(got.terms().size(), want.size()) << what << " round " << round;
+      auto it = want.begin();
+      for (const auto& [m, c] : got.terms()) {
+        EXPECT_EQ(ids_of(m), it->first) << what << " round " << round;
+        EXPECT_EQ(c, it->second) << what << " round " << round;  // bit for bit
+        EXPECT_EQ(got.coefficient(m), it->second);
+        ++it;
+      }
+    };
+    expect_same(p[0], ref[0], "p");
+    expect_same(p[0] * p[1], prod, "product");
+    expect_same(p[0] + p[1], sum, "sum");
+  }
+}
+
+TEST(RatePolyTerms, ZeroCoefficientsAreKeptAndAbsentOnesReadAsZero) {
+  const auto w = RatePoly<double>::variable({1, RateVariable::Omega});
+  const RatePoly<double> p = w - w;
+  ASSERT_EQ(p.terms().size(), 1u);  // "zero" is for the judge to say, not the representation
+  EXPECT_EQ(p.terms().front().second, 0.0);
+  EXPECT_FALSE(p.is_constant());
+  EXPECT_EQ(p.coefficient(Monomial{RateVariable{2, RateVariable::Omega}.id()}), 0.0);
+  EXPECT_EQ(p.degree(), 1);
+}
+
+TEST(RatePolyTerms, ConstantDivisionAndEvaluationInExactArithmetic) {
+  using Q = cln::cl_RA;
+  const auto w1 = RatePoly<Q>::variable({1, RateVariable::Omega});
+  const auto wd2 = RatePoly<Q>::variable({2, RateVariable::OmegaDot});
+  const RatePoly<Q> p = (RatePoly<Q>(Q(3)) * wd2 + w1 * w1 + RatePoly<Q>(Q(5))) / RatePoly<Q>(Q(2));
+  EXPECT_TRUE(RatePoly<Q>(Q(7)).is_constant());
+  EXPECT_FALSE(p.is_constant());
+  EXPECT_EQ(p.constant(), Q(5) / 2);
+  EXPECT_EQ(p.degree(), 2);
+  // At omega = (2, 0), omega-dot = (0, 4): (3*4 + 4 + 5) / 2.
+  EXPECT_EQ(p.evaluate({Q(2), Q(0)}, {Q(0), Q(4)}), Q(21) / 2);
+  EXPECT_THROW((void)(p / w1), InputError);
+  EXPECT_THROW((void)(p / RatePoly<Q>(Q(0))), UndefinedQuantity);
+}
+
+}  // namespace
+}  // namespace linkproof
