@@ -108,6 +108,15 @@ const std::vector<Case>& corpus() {
                                          "--scene", source_file("verify/scenes/pentagon.yaml")};
        },
        2, "a vector where a number is expected", "", ""},
+      {"AnIllFormedClaimGivenToProve",
+       [] { return std::vector<std::string>{"prove", "--file", write_temp("vec3.yaml", claim_file("r[2]"))}; },
+       2, "claim 'c1': a vector where a number is expected: r[2]", "", ""},
+      {"AnIllFormedClaimGivenToReport",
+       [] {
+         return std::vector<std::string>{"report", write_temp("vec4.yaml", claim_file("1/omega[1]")), "--out",
+                                         ::testing::TempDir() + "ill_formed_report"};
+       },
+       2, "division by an expression that contains rates", "", ""},
       {"ATermOfDegreeNineInTheRates",  // RatePoly's monomials hold 8 rates (docs/limits.md)
        [] { return std::vector<std::string>{"check-claim", write_temp("deg9.yaml", claim_file("omega[1]^9"))}; },
        2, "degree 9 in the rates", "", ""},
