@@ -7,7 +7,6 @@
 #include <optional>
 
 #include "linkproof/check/inconclusive_cause.h"
-#include "linkproof/core/error.h"
 
 namespace linkproof {
 
@@ -101,11 +100,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
   } catch (const std::bad_alloc&) {
     throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception& e) {
-    // A user's claim that is not well formed (a vector where a number is expected, division by
-    // the rates, an index out of range) is bad input, refused like any other (exit 2); in
-    // linkproof's own catalogue it is a bug: the verdict error (exit 3).
-    if (const auto* bad = dynamic_cast<const InputError*>(&e); bad && !claim.info.file.empty())
-      throw InputError(claim.info.file, "claim '" + claim.info.id + "'", bad->problem());
+    refuse_if_ill_formed_user_claim(claim.info, e);  // a vector as a number, division by rates: exit 2
     out.verdict = Verdict::Error;
     out.error = e.what();
     out.headline.verdict = Verdict::Error;

@@ -94,8 +94,7 @@ report::Reproduce reproduce_of(const ReportArgs& a, std::string seed) {
 }
 
 int report_claim_file(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
-  ClaimFile file = parse_claim_file(text, a.input);
-  for (DataClaim& c : file.claims) c.info.file = a.input;  // the user's file
+  const ClaimFile file = parse_user_claim_file(text, a.input);
   check_prove_limits(a.n, a.ladder_seconds);
   const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   ProveOptions o;

@@ -221,10 +221,12 @@ ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& sour
   }
 }
 
-ClaimFile load_claim_file(const std::string& path) {
-  ClaimFile file = parse_claim_file(yaml_io::read_scene_file(path), path);
+ClaimFile parse_user_claim_file(const std::string& yaml_text, const std::string& path) {
+  ClaimFile file = parse_claim_file(yaml_text, path);
   for (DataClaim& c : file.claims) c.info.file = path;
   return file;
 }
+
+ClaimFile load_claim_file(const std::string& path) { return parse_user_claim_file(yaml_io::read_scene_file(path), path); }
 
 }  // namespace linkproof

@@ -6,7 +6,6 @@
 #include <set>
 
 #include "exceptional_set.h"
-#include "linkproof/core/error.h"
 #include "linkproof/core/symbolic_scalar.h"
 #include "linkproof/core/time_budget.h"
 #include "linkproof/proof/lift.h"
@@ -270,9 +269,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
   } catch (const std::bad_alloc&) {
     throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception& e) {
-    // A user's claim that is not well formed is bad input (exit 2), as in run_claim (check.cpp).
-    if (const auto* bad = dynamic_cast<const InputError*>(&e); bad && !claim.info.file.empty())
-      throw InputError(claim.info.file, "claim '" + claim.info.id + "'", bad->problem());
+    refuse_if_ill_formed_user_claim(claim.info, e);  // a vector as a number, division by rates: exit 2
     r.verdict = ProofVerdict::Error;
     r.error = e.what();
   }

@@ -9,6 +9,7 @@
 //              identity that is a polynomial in the input rates: a wrong term is named.
 #pragma once
 
+#include <exception>
 #include <functional>
 #include <string>
 #include <tuple>
@@ -34,6 +35,12 @@ struct ClaimInfo {
   std::string file{};  // {}: the catalogue's aggregate initialisations may leave it out
   bool applies_to(int n) const { return n >= min_n && (max_n == 0 || n <= max_n); }
 };
+
+/// Called where an evaluation of a claim threw `e`. For a user's claim (info.file set) an
+/// InputError means the claim is not well formed: bad input, rethrown naming the file and the
+/// claim (exit 2). Otherwise it returns and the caller records the verdict error (in the
+/// catalogue an ill-formed claim is a bug: exit 3).
+void refuse_if_ill_formed_user_claim(const ClaimInfo& info, const std::exception& e);
 
 template <class T>
 struct Comparison {

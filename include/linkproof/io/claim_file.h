@@ -36,6 +36,10 @@ struct ClaimFile {
 
 /// Parses claim-file text; `source` names it in errors.
 ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& source);
+/// A user's claim file (its text already read from `path`): parsed, each claim's info.file set,
+/// so that a claim that is not well formed is refused as bad input naming the file.
+ClaimFile parse_user_claim_file(const std::string& yaml_text, const std::string& path);
+/// Reads (with the input size cap) and parses a user's claim file.
 ClaimFile load_claim_file(const std::string& path);
 
 /// Upper bound on the number of sides a claim may ask for ("4..60"): proofs and sweeps are
