@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "linkproof/claims/claim_expression.h"
+#include "linkproof/claims/claim_program.h"
 #include "linkproof/claims/polygon_context.h"
 #include "linkproof/claims/rate_poly.h"
 #include "linkproof/claims/vocabulary.h"
@@ -47,9 +48,13 @@ class ClaimEvaluator {
   /// quantity undefined, InputError for a claim that is not well formed at this n (an index out
   /// of range, a vector where a number is expected, division by rates).
   RatePoly<T> scalar(const GiNaC::ex& e, IndexBindings b = {}) {
-    Value v = value(e, b);
-    if (v.is_vector) throw error("a vector where a number is expected: " + text(e));
-    return std::move(v.s);
+    const ClaimProgram& p = compiled_claim(e);  // throws for an expression ill formed at every n
+    if (p.nodes[static_cast<size_t>(p.root)].is_vector) throw error("a vector where a number is expected: " + text(e));
+    std::vector<char>& noted = noted_[&p];
+    noted.resize(p.indexes.size());
+    program_ = &p;
+    noted_now_ = &noted;
+    return scalar_of(p.root, b).to_poly_moved();
   }
 
   /// Where the expression is not local (see above); empty if it is.
@@ -73,19 +78,77 @@ class ClaimEvaluator {
   const std::map<std::vector<int>, Undefined>& undefined_inputs() const { return undefined_inputs_; }
 
  private:
-  struct Value {
-    bool is_vector = false;
-    RatePoly<T> s, x, y;
-    static Value number(RatePoly<T> p) { Value v; v.s = std::move(p); return v; }
-    static Value vec(RatePoly<T> x, RatePoly<T> y) {
-      Value v;
-      v.is_vector = true;
-      v.x = std::move(x);
-      v.y = std::move(y);
-      return v;
+  using Op = ClaimProgram::Op;
+  using Node = ClaimProgram::Node;
+
+  /// A number: one term c * m (no allocation, and most values of a claim are one term: a
+  /// constant, a rate, a product of them) or a polynomial. Each operation does on the
+  /// coefficients what the same operation on polynomials (rate_poly.h) does, in the same order,
+  /// so the results are the same bytes as evaluating with polynomials throughout.
+  struct Scalar {
+    bool is_poly = false;
+    Monomial m;
+    T c;
+    RatePoly<T> p;
+    static Scalar term(T c, Monomial m = {}) {
+      Scalar s;
+      s.c = std::move(c);
+      s.m = m;
+      return s;
     }
-    static Value vec(const Vec2<T>& a) { return vec(RatePoly<T>(a.x), RatePoly<T>(a.y)); }
+    static Scalar poly(RatePoly<T> q) {
+      Scalar s;
+      s.is_poly = true;
+      s.p = std::move(q);
+      return s;
+    }
+    RatePoly<T> to_poly_moved() { return std::move(*this).to_poly(); }
+    RatePoly<T> to_poly() && {
+      if (is_poly) return std::move(p);
+      RatePoly<T> q;
+      q.add(m, std::move(c));
+      return q;
+    }
+    /// Adds *this to `total` in place.
+    void add_to(RatePoly<T>& total) const {
+      if (is_poly) total += p;
+      else total.add(m, c);
+    }
   };
+  struct Vector {
+    Scalar x, y;
+  };
+
+  static Scalar plus(Scalar a, const Scalar& b) {
+    if (!a.is_poly && !b.is_poly && a.m == b.m) {
+      a.c = a.c + b.c;
+      return a;
+    }
+    RatePoly<T> s = std::move(a).to_poly();
+    b.add_to(s);
+    return Scalar::poly(std::move(s));
+  }
+  static Scalar negated(const Scalar& a) {
+    if (!a.is_poly) return Scalar::term(-a.c, a.m);
+    return Scalar::poly(-a.p);
+  }
+  /// a - b as a + (-b), which is what RatePoly's subtraction computes.
+  static Scalar minus(Scalar a, const Scalar& b) { return plus(std::move(a), negated(b)); }
+  static Scalar times(const Scalar& a, const Scalar& b) {
+    if (!a.is_poly && !b.is_poly) return Scalar::term(a.c * b.c, Monomial::product(a.m, b.m));
+    return Scalar::poly(Scalar(a).to_poly() * Scalar(b).to_poly());
+  }
+  static Vector times(const Vector& a, const Scalar& b) { return {times(a.x, b), times(a.y, b)}; }
+  static Vector times(const Scalar& a, const Vector& b) { return {times(a, b.x), times(a, b.y)}; }
+
+  static Scalar constant(const T& x) { return Scalar::term(x); }
+  static Scalar constant(long k) { return Scalar::term(from_int<T>(k)); }
+  static Scalar rate(int j, RateVariable::Kind kind) { return Scalar::term(from_int<T>(1), Monomial{RateVariable{j, kind}.id()}); }
+  static Vector vec(const Vec2<T>& a) { return {constant(a.x), constant(a.y)}; }
+
+  /// A rational constant of the claim in T; integers (most constants) through from_int, which
+  /// knows which of them convert exactly and cheaply.
+  static T number(const Node& n) { return n.small_integer ? from_int<T>(n.integer) : from_rational<T>(n.rational); }
 
   static std::string text(const GiNaC::ex& e) { return ScalarTraits<GiNaC::ex>::to_string(e); }
   static InputError error(const std::string& problem) { return InputError("<claim>", "expression", problem); }
@@ -94,176 +157,159 @@ class ClaimEvaluator {
       if (x == v) return;
     violations_.push_back(v);
   }
-  static RatePoly<T> constant(const T& x) { return RatePoly<T>(x); }
-  static RatePoly<T> constant(long k) { return RatePoly<T>(from_int<T>(k)); }
 
-  /// A rational constant of the claim in T; integers (most constants) through from_int, which
-  /// knows which of them convert exactly and cheaply.
-  static T number(const GiNaC::numeric& q) {
-    if (q.is_integer() && GiNaC::abs(q) < GiNaC::numeric(1L << 62)) return from_int<T>(q.to_long());
-    return from_rational<T>(cln::the<cln::cl_RA>(q.to_cl_N()));
-  }
+  const Node& node(int id) const { return program_->nodes[static_cast<size_t>(id)]; }
 
-  Value value(const GiNaC::ex& e, const IndexBindings& b) {
-    using namespace GiNaC;
-    if (is_exactly_a<numeric>(e)) {
-      const numeric& q = ex_to<numeric>(e);
-      if (!q.is_rational()) throw error("the number " + text(e) + " is not rational");
-      return Value::number(constant(number(q)));
-    }
-    if (is_exactly_a<power>(e)) {
-      const ex& k = e.op(1);
-      if (!is_exactly_a<numeric>(k) || !ex_to<numeric>(k).is_integer())
-        throw error("only integer powers are allowed: " + text(e));
-    }
-    if (is_exactly_a<add>(e) || is_exactly_a<mul>(e) || is_exactly_a<power>(e)) {
-      // The canonical form, not GiNaC's tree: GiNaC places signs and numeric factors between
-      // sums and products in an address-dependent order (claim_atoms::canonical_form()).
-      const CanonicalForm::Split s = claim_atoms::canonical_form().split(e);
-      return scaled(form_value(s.primitive, e, b), s.content, e);
-    }
-    if (const int code = claim_atoms::code_of_symbol(e); code >= 0) return global(vocabulary()[static_cast<size_t>(code)], b);
-    if (const int code = claim_atoms::code_of_call(e); code >= 0) return call(vocabulary()[static_cast<size_t>(code)], e, b);
-    throw error("cannot evaluate " + text(e));
-  }
-
-  /// c * v; v itself if c is 1.
-  Value scaled(Value v, const GiNaC::numeric& c, const GiNaC::ex& e) {
-    if (c.is_equal(GiNaC::numeric(1))) return v;
-    const Value k = Value::number(constant(number(c)));
-    return multiply(k, v, e);
-  }
-
-  /// The value of a primitive part of claim_atoms::canonical_form(), operands in its canonical
-  /// order; `e` is the expression it came from (for messages).
-  Value form_value(CanonicalForm::Id id, const GiNaC::ex& e, const IndexBindings& b) {
-    const CanonicalForm::Node& n = claim_atoms::canonical_form().node(id);
-    switch (n.kind) {
-      case CanonicalForm::Kind::One: return Value::number(constant(1));
-      case CanonicalForm::Kind::Atom: {
-        const GiNaC::ex atom = n.atom;  // value() may add nodes to the form: n may move
-        return value(atom, b);
+  Scalar scalar_of(int id, const IndexBindings& b) {
+    const Node& n = node(id);
+    switch (n.op) {
+      case Op::Constant: return constant(number(n));
+      case Op::Scale: return times(constant(number(n)), scalar_of(n.children[0], b));
+      case Op::Sum: {
+        Scalar s = scalar_of(n.children[0], b);
+        for (size_t i = 1; i < n.children.size(); ++i) s = plus(std::move(s), scalar_of(n.children[i], b));
+        return s;
       }
-      case CanonicalForm::Kind::Symbol: break;  // a form with atoms has no inputs
-      case CanonicalForm::Kind::Sum: {
-        // Copied: evaluating a term may add nodes to the form (new subexpressions of a call).
-        const auto terms = n.terms;
-        Value sum = scaled(form_value(terms[0].first, e, b), terms[0].second, e);
-        for (size_t i = 1; i < terms.size(); ++i) {
-          Value t = scaled(form_value(terms[i].first, e, b), terms[i].second, e);
-          if (t.is_vector != sum.is_vector) throw error("a number added to a vector in " + text(e));
-          if (sum.is_vector) {
-            sum.x = sum.x + t.x;
-            sum.y = sum.y + t.y;
-          } else {
-            sum.s = sum.s + t.s;
-          }
-        }
-        return sum;
-      }
-      case CanonicalForm::Kind::Product: {
-        const auto factors = n.factors;
-        Value p;
-        for (size_t i = 0; i < factors.size(); ++i) {
-          const auto [base_id, k] = factors[i];
-          Value f = form_value(base_id, e, b);
-          if (k != 1) {
-            if (f.is_vector) throw error("power of a vector: " + text(e) + " (use norm2 or dot)");
-            RatePoly<T> r = constant(1);
-            for (int q = 0; q < std::abs(k); ++q) r = r * f.s;
-            if (k > 0) {
-              f = Value::number(std::move(r));
-            } else {
-              RatePoly<T> inverse = constant(1) / r;  // tests r for zero
-              divisors_.push_back(r.constant());
-              f = Value::number(std::move(inverse));
-            }
-          }
-          p = i == 0 ? std::move(f) : multiply(p, f, e);
-        }
+      case Op::Product: {
+        Scalar p = scalar_of(n.children[0], b);
+        for (size_t i = 1; i < n.children.size(); ++i) p = times(p, scalar_of(n.children[i], b));
         return p;
       }
+      case Op::Power: return power(scalar_of(n.children[0], b), n.exponent);
+      case Op::Global: return global(*n.word);
+      case Op::InputScalar: return input_scalar(*n.word, index(n, b, true));
+      case Op::SideScalar: return side_rate(index(n, b, false), n.word == words().side_omega_dot);
+      case Op::Norm2: {
+        const Vector a = vector_of(n.children[0], b);
+        return plus(times(a.x, a.x), times(a.y, a.y));
+      }
+      case Op::Vx: return vector_of(n.children[0], b).x;
+      case Op::Vy: return vector_of(n.children[0], b).y;
+      case Op::Dot: {
+        const Vector a = vector_of(n.children[0], b), c = vector_of(n.children[1], b);
+        return plus(times(a.x, c.x), times(a.y, c.y));
+      }
+      case Op::Cross: {
+        const Vector a = vector_of(n.children[0], b), c = vector_of(n.children[1], b);
+        return minus(times(a.x, c.y), times(a.y, c.x));
+      }
+      case Op::SumJ:
+      case Op::SumPairs:
+      case Op::SumPairsLt: return Scalar::poly(sum(n, b));
+      default: break;
     }
-    throw error("cannot evaluate " + text(e));
+    throw InternalError("claim program: a vector node where a number was compiled");
   }
 
-  Value multiply(const Value& a, const Value& b, const GiNaC::ex& e) {
-    if (a.is_vector && b.is_vector) throw error("product of two vectors in " + text(e) + " (use dot or cross)");
-    if (a.is_vector) return Value::vec(a.x * b.s, a.y * b.s);
-    if (b.is_vector) return Value::vec(a.s * b.x, a.s * b.y);
-    return Value::number(a.s * b.s);
+  Vector vector_of(int id, const IndexBindings& b) {
+    const Node& n = node(id);
+    switch (n.op) {
+      case Op::Scale: return times(constant(number(n)), vector_of(n.children[0], b));
+      case Op::Sum: {
+        Vector s = vector_of(n.children[0], b);
+        for (size_t i = 1; i < n.children.size(); ++i) {
+          Vector t = vector_of(n.children[i], b);
+          s.x = plus(std::move(s.x), t.x);
+          s.y = plus(std::move(s.y), t.y);
+        }
+        return s;
+      }
+      case Op::Product: {
+        // One factor is the vector; the product keeps the order of the factors.
+        bool vector = node(n.children[0]).is_vector;
+        Vector pv;
+        Scalar ps;
+        if (vector) pv = vector_of(n.children[0], b);
+        else ps = scalar_of(n.children[0], b);
+        for (size_t i = 1; i < n.children.size(); ++i) {
+          if (node(n.children[i]).is_vector) {
+            pv = times(ps, vector_of(n.children[i], b));
+            vector = true;
+          } else if (vector) {
+            pv = times(pv, scalar_of(n.children[i], b));
+          } else {
+            ps = times(ps, scalar_of(n.children[i], b));
+          }
+        }
+        return pv;
+      }
+      case Op::InputVector: {
+        const int j = index(n, b, true);
+        if (n.word == words().Kp) return vec(construction(j).k_prime);
+        if (n.word == words().Q) return vec(construction(j).q.get());
+        return vec(construction(j).p_prime.get());
+      }
+      case Op::SideVector: {
+        const int k = index(n, b, false);
+        if (n.word == words().r) return vec(c_.r(k));
+        if (n.word == words().K) return vec(c_.polygon.joint(k));
+        return acceleration_of_joint(k);
+      }
+      case Op::Perp: {
+        const Vector a = vector_of(n.children[0], b);
+        return {negated(a.y), a.x};
+      }
+      default: break;
+    }
+    throw InternalError("claim program: a number node where a vector was compiled");
   }
 
-  /// What index() needs of one index expression at this n, worked out once per (word, argument):
-  /// an index expression is read by GiNaC (has, subs) only the first time, not once per term of
-  /// a sum over pairs.
-  struct IndexForm {
-    bool uses_j = false, uses_l = false;
-    bool affine = false;  ///< the index is c0 + cj j + cl l with integers c0, cj, cl
-    int c0 = 0, cj = 0, cl = 0;
-    bool noted = false;   ///< its locality note (if any) has been made
-  };
-
-  static const GiNaC::symbol& index_symbol(const char* name) {
-    return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
+  /// f^k, k != 1, as repeated products from 1; k < 0 divides 1 by f^|k| (tested for zero) and
+  /// records the divisor.
+  Scalar power(const Scalar& f, int k) {
+    Scalar r = constant(1);
+    for (int q = 0; q < std::abs(k); ++q) r = times(r, f);
+    if (k > 0) return r;
+    if (!r.is_poly && r.m.empty()) {
+      // Tested like every divisor of the construction: exactly (a symbolic proof records it in
+      // its exceptional set; an exact check reports the claim undefined where it vanishes).
+      if (linkproof::is_zero(r.c))
+        throw UndefinedQuantity("a divisor in the claim's expression", "it is zero at this configuration");
+      Scalar inverse = constant(from_int<T>(1) / r.c);
+      divisors_.push_back(r.c);
+      return inverse;
+    }
+    RatePoly<T> d = std::move(r).to_poly();
+    RatePoly<T> inverse = RatePoly<T>(from_int<T>(1)) / d;  // refuses rates, tests for zero
+    divisors_.push_back(d.constant());
+    return Scalar::poly(std::move(inverse));
   }
 
-  IndexForm index_form(const GiNaC::ex& arg) const {
+  /// The value of an index (a node's), checked against [1, n - 3] for an input and [1, n] for
+  /// a side, with its locality note made the first time.
+  int index(const Node& node, const IndexBindings& b, bool input_index) {
     using namespace GiNaC;
-    const symbol &n = index_symbol("n"), &j = index_symbol("j"), &l = index_symbol("l");
-    IndexForm f;
-    f.uses_j = arg.has(j);
-    f.uses_l = arg.has(l);
-    const ex v = arg.subs(n == c_.n);
-    if (!v.is_polynomial(lst{j, l}) || v.degree(j) > 1 || v.degree(l) > 1) return f;
-    const ex c0 = v.subs(lst{j == 0, l == 0}), cj = v.subs(lst{j == 1, l == 0}) - c0,
-             cl = v.subs(lst{j == 0, l == 1}) - c0;
-    for (const ex* c : {&c0, &cj, &cl})
-      if (!is_exactly_a<numeric>(*c) || !ex_to<numeric>(*c).is_integer()) return f;
-    if (!(v - c0 - cj * j - cl * l).expand().is_zero()) return f;
-    f.affine = true;
-    f.c0 = ex_to<numeric>(c0).to_int();
-    f.cj = ex_to<numeric>(cj).to_int();
-    f.cl = ex_to<numeric>(cl).to_int();
-    return f;
-  }
-
-  /// The integer value of an index expression, checked against [1, hi], with locality notes.
-  int index(const Word& w, const GiNaC::ex& arg, const IndexBindings& b, bool input_index) {
-    using namespace GiNaC;
+    const ClaimProgram::Index& f = program_->indexes[static_cast<size_t>(node.index)];
     const int n = c_.n;
-    const auto key = std::pair(&w, &ex_to<basic>(arg));  // the claim's expression outlives the evaluator
-    auto it = index_forms_.find(key);
-    if (it == index_forms_.end()) it = index_forms_.emplace(key, index_form(arg)).first;
-    IndexForm& f = it->second;
     int k;
     if (f.affine) {
-      k = f.c0 + f.cj * b.j + f.cl * b.l;
+      k = f.c0 + f.cn * n + f.cj * b.j + f.cl * b.l;
     } else {
-      const ex v = arg.subs(lst{index_symbol("n") == n, index_symbol("j") == b.j, index_symbol("l") == b.l});
+      const ex v = f.expression.subs(lst{index_symbol("n") == n, index_symbol("j") == b.j, index_symbol("l") == b.l});
       if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
-        throw error("the index of " + w.name + "[" + text(arg) + "] is not an integer");
+        throw error("the index of " + f.written + " is not an integer");
       k = ex_to<numeric>(v).to_int();
     }
     const int hi = input_index ? n - 3 : n;
     if (k < 1 || k > hi)
-      throw error(w.name + "[" + text(arg) + "] = " + w.name + "[" + std::to_string(k) + "] is out of range 1.." +
+      throw error(f.written + " = " + node.word->name + "[" + std::to_string(k) + "] is out of range 1.." +
                   std::to_string(hi) + " at n = " + std::to_string(n));
     // Locality: a bound index alone (j or l) names the input's own side; n, n-1, n-2 name the
     // sides every coefficient may depend on. Anything else names a particular side. (An index
     // without j or l has the same value k every time, so one note is all it can make.)
-    if (f.noted) return k;
-    f.noted = true;
-    const bool bare_bound =
-        (f.uses_j || f.uses_l) && (arg.is_equal(index_symbol("j")) || arg.is_equal(index_symbol("l")));
+    char& noted = (*noted_now_)[static_cast<size_t>(node.index)];
+    if (noted) return k;
+    noted = 1;
     if (f.uses_j || f.uses_l) {
-      if (!bare_bound) note(w.name + "[" + text(arg) + "]: an index other than j, l, n, n-1, n-2");
-      else if (w.name == "K" || w.name == "acc")
-        note(w.name + "[" + text(arg) + "]: depends on every side before it");
+      if (!f.bound_note.empty()) note(f.bound_note);
     } else if (k < n - 2) {
-      note(w.name + "[" + text(arg) + "]: names a particular input side");
+      note(f.written + ": names a particular input side");
     }
     return k;
+  }
+
+  static const GiNaC::symbol& index_symbol(const char* name) {
+    return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
   }
 
   /// The words the evaluator tells apart, looked up once: the inner loops of a sum compare
@@ -300,13 +346,6 @@ class ClaimEvaluator {
     const Word* fourbar_omega_dot_cpl = &word_named("fourbar_omega_dot_cpl");
     const Word* r = &word_named("r");
     const Word* K = &word_named("K");
-    const Word* dot = &word_named("dot");
-    const Word* norm2 = &word_named("norm2");
-    const Word* perp = &word_named("perp");
-    const Word* vx = &word_named("vx");
-    const Word* vy = &word_named("vy");
-    const Word* sum_j = &word_named("sum_j");
-    const Word* sum_pairs = &word_named("sum_pairs");
   };
   static const Words& words() {
     static const Words w;
@@ -317,34 +356,33 @@ class ClaimEvaluator {
     return c_.construction_for(reading_.construction)[static_cast<size_t>(j - 1)];
   }
 
-  Value global(const Word& w, const IndexBindings&) {
+  Scalar global(const Word& w) {
     const std::string& s = w.name;
-    if (w.kind == WordKind::Index) throw error("'" + s + "' is an index, not a number");
     if (&w == words().omega_out || &w == words().omega_cpl) {
       const auto& vc = c_.velocity_coefficients().get();
       const auto& coef = &w == words().omega_out ? vc.first : vc.second;
       RatePoly<T> p;
       for (int j = 1; j <= c_.inputs(); ++j)
-        p += constant(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
-      return Value::number(p);
+        p += RatePoly<T>(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
+      return Scalar::poly(std::move(p));
     }
     if (&w == words().omega_dot_out || &w == words().omega_dot_cpl) {
       const auto& tc = &w == words().omega_dot_out ? c_.coefficients().get().first : c_.coefficients().get().second;
-      return Value::number(acceleration_poly(tc, 0));
+      return Scalar::poly(acceleration_poly(tc, 0));
     }
     const ClosedForms<T>& cf = c_.closed().get();
-    if (&w == words().D) return Value::number(constant(cf.D));
+    if (&w == words().D) return constant(cf.D);
     if (reading_.signed_phi) {
-      if (&w == words().cot_phi) return Value::number(constant(cf.cot_phi));
-      if (&w == words().rho) return Value::number(constant(cf.rho));
-      if (&w == words().rho_companion) return Value::number(constant(cf.rho_companion));
+      if (&w == words().cot_phi) return constant(cf.cot_phi);
+      if (&w == words().rho) return constant(cf.rho);
+      if (&w == words().rho_companion) return constant(cf.rho_companion);
     } else {
       // The unsigned drawn angle |phi| (erratum A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
       const T abs_d = abs_value(cf.D);
       const Vec2<T> a = c_.r(c_.n - 2), bb = c_.r(c_.n - 1);
-      if (&w == words().cot_phi) return Value::number(constant(dot(a, bb) / abs_d));
-      if (&w == words().rho) return Value::number(constant(norm2(a) / abs_d));
-      if (&w == words().rho_companion) return Value::number(constant(norm2(bb) / abs_d));
+      if (&w == words().cot_phi) return constant(dot(a, bb) / abs_d);
+      if (&w == words().rho) return constant(norm2(a) / abs_d);
+      if (&w == words().rho_companion) return constant(norm2(bb) / abs_d);
     }
     throw error("'" + s + "' is not a number");
   }
@@ -358,48 +396,21 @@ class ClaimEvaluator {
       const auto k = static_cast<size_t>(j - 1);
       const int as = only_j ? only_j : j;
       const auto w = RatePoly<T>::variable({as, RateVariable::Omega});
-      p += constant(tc.omega_dot[k]) * RatePoly<T>::variable({as, RateVariable::OmegaDot});
-      p += constant(tc.omega_sq[k]) * w * w;
+      p += RatePoly<T>(tc.omega_dot[k]) * RatePoly<T>::variable({as, RateVariable::OmegaDot});
+      p += RatePoly<T>(tc.omega_sq[k]) * w * w;
     }
     for (int j = 1; j <= m; ++j)
       for (int l = j + 1; l <= m; ++l)
-        p += constant(tc.omega_pair[pair_index(j, l, m)]) * RatePoly<T>::variable({j, RateVariable::Omega}) *
+        p += RatePoly<T>(tc.omega_pair[pair_index(j, l, m)]) * RatePoly<T>::variable({j, RateVariable::Omega}) *
              RatePoly<T>::variable({l, RateVariable::Omega});
     return p;
   }
 
-  Value call(const Word& w, const GiNaC::ex& e, const IndexBindings& b) {
-    const std::string& s = w.name;
-    const GiNaC::ex& a0 = e.op(1);
-    switch (w.kind) {
-      case WordKind::Sum: return Value::number(sum(w, a0, b));
-      case WordKind::VectorFunction: return vector_function(w, e, b);
-      case WordKind::InputScalar: return Value::number(input_scalar(w, index(w, a0, b, true)));
-      case WordKind::InputVector: {
-        const int j = index(w, a0, b, true);
-        if (&w == words().Kp) return Value::vec(construction(j).k_prime);
-        if (&w == words().Q) return Value::vec(construction(j).q.get());
-        return Value::vec(construction(j).p_prime.get());
-      }
-      case WordKind::SideVector: {
-        const int k = index(w, a0, b, false);
-        if (&w == words().r) return Value::vec(c_.r(k));
-        if (&w == words().K) return Value::vec(c_.polygon.joint(k));
-        return acceleration_of_joint(k);
-      }
-      case WordKind::SideScalar: {
-        const int k = index(w, a0, b, false);
-        return Value::number(side_rate(k, &w == words().side_omega_dot));
-      }
-      default: throw error("'" + s + "' cannot be called");
-    }
-  }
-
-  RatePoly<T> input_scalar(const Word& word, int j) {
+  Scalar input_scalar(const Word& word, int j) {
     const std::string& s = word.name;
     const auto k = static_cast<size_t>(j - 1);
-    if (&word == words().omega) return RatePoly<T>::variable({j, RateVariable::Omega});
-    if (&word == words().omega_dot) return RatePoly<T>::variable({j, RateVariable::OmegaDot});
+    if (&word == words().omega) return rate(j, RateVariable::Omega);
+    if (&word == words().omega_dot) return rate(j, RateVariable::OmegaDot);
     if (&word == words().i_out) return constant(construction(j).i_out.get());
     if (&word == words().i_cpl) return constant(construction(j).i_cpl.get());
     if (&word == words().cot_beta) return constant(construction(j).cot_beta.get());
@@ -411,110 +422,106 @@ class ClaimEvaluator {
     if (&word == words().lambda_closed) return constant(c_.closed().get().lambda[k]);
     if (&word == words().mu_closed) return constant(c_.closed().get().mu[k]);
     const FourBarTruth<T>& fb = c_.four_bar(static_cast<int>(k) + 1);
-    const auto w = RatePoly<T>::variable({j, RateVariable::Omega});
     if (&word == words().fourbar_ratio_out) return constant(fb.ratio_out.get());
     if (&word == words().fourbar_ratio_cpl) return constant(fb.ratio_cpl.get());
-    if (&word == words().fourbar_omega_out) return constant(fb.ratio_out.get()) * w;
-    if (&word == words().fourbar_omega_cpl) return constant(fb.ratio_cpl.get()) * w;
-    if (&word == words().fourbar_omega_dot_out) return acceleration_poly(fb.coefficients.get().first, j);
-    if (&word == words().fourbar_omega_dot_cpl) return acceleration_poly(fb.coefficients.get().second, j);
+    if (&word == words().fourbar_omega_out) return times(constant(fb.ratio_out.get()), rate(j, RateVariable::Omega));
+    if (&word == words().fourbar_omega_cpl) return times(constant(fb.ratio_cpl.get()), rate(j, RateVariable::Omega));
+    if (&word == words().fourbar_omega_dot_out) return Scalar::poly(acceleration_poly(fb.coefficients.get().first, j));
+    if (&word == words().fourbar_omega_dot_cpl) return Scalar::poly(acceleration_poly(fb.coefficients.get().second, j));
     throw error("'" + s + "' is not an input quantity");
   }
 
   /// omega_{k,n} or omega-dot_{k,n} of side k as a polynomial in the input rates.
-  RatePoly<T> side_rate(int k, bool acceleration) {
+  Scalar side_rate(int k, bool acceleration) {
     const int n = c_.n;
-    if (k <= n - 3) return RatePoly<T>::variable({k, acceleration ? RateVariable::OmegaDot : RateVariable::Omega});
+    if (k <= n - 3) return rate(k, acceleration ? RateVariable::OmegaDot : RateVariable::Omega);
     if (k == n) return constant(0);
     const bool out = k == n - 1;
     if (!acceleration) {
       const auto& vc = c_.velocity_coefficients().get();
       RatePoly<T> p;
       for (int j = 1; j <= n - 3; ++j)
-        p += constant((out ? vc.first : vc.second)[static_cast<size_t>(j - 1)]) *
+        p += RatePoly<T>((out ? vc.first : vc.second)[static_cast<size_t>(j - 1)]) *
              RatePoly<T>::variable({j, RateVariable::Omega});
-      return p;
+      return Scalar::poly(std::move(p));
     }
-    return acceleration_poly(out ? c_.coefficients().get().first : c_.coefficients().get().second, 0);
+    return Scalar::poly(acceleration_poly(out ? c_.coefficients().get().first : c_.coefficients().get().second, 0));
   }
 
   /// Acceleration of joint K_k along the chain from the fixed joint K_1 (eqs. 8, 12).
-  Value acceleration_of_joint(int k) {
-    RatePoly<T> ax, ay;
+  Vector acceleration_of_joint(int k) {
+    Scalar ax = Scalar::poly({}), ay = Scalar::poly({});
     for (int i = 1; i < k; ++i) {
       const Vec2<T> r = c_.r(i);
-      const RatePoly<T> w = side_rate(i, false), wd = side_rate(i, true);
-      const RatePoly<T> w2 = w * w;
+      const Scalar w = side_rate(i, false), wd = side_rate(i, true);
+      const Scalar w2 = times(w, w);
       // omega-dot_i J r_i - omega_i^2 r_i, J r = (-r_y, r_x)
-      ax = ax - wd * constant(r.y) - w2 * constant(r.x);
-      ay = ay + wd * constant(r.x) - w2 * constant(r.y);
+      ax = minus(minus(std::move(ax), times(wd, constant(r.y))), times(w2, constant(r.x)));
+      ay = minus(plus(std::move(ay), times(wd, constant(r.x))), times(w2, constant(r.y)));
     }
-    return Value::vec(ax, ay);
+    return {std::move(ax), std::move(ay)};
   }
 
-  Value vector_function(const Word& word, const GiNaC::ex& e, const IndexBindings& b) {
-    const std::string& s = word.name;
-    const Value a = value(e.op(1), b);
-    if (!a.is_vector) throw error(s + "(...) needs a vector argument: " + text(e));
-    if (&word == words().norm2) return Value::number(a.x * a.x + a.y * a.y);
-    if (&word == words().perp) return Value::vec(-a.y, a.x);
-    if (&word == words().vx) return Value::number(a.x);
-    if (&word == words().vy) return Value::number(a.y);
-    const Value c = value(e.op(2), b);
-    if (!c.is_vector) throw error(s + "(...) needs vector arguments: " + text(e));
-    if (&word == words().dot) return Value::number(a.x * c.x + a.y * c.y);
-    return Value::number(a.x * c.y - a.y * c.x);  // cross
-  }
-
-  RatePoly<T> sum(const Word& word, const GiNaC::ex& body, const IndexBindings& b) {
-    const std::string& s = word.name;
+  /// sum_j, sum_pairs, sum_pairs_lt of the node's body, with the locality notes of its terms.
+  RatePoly<T> sum(const Node& node, const IndexBindings& b) {
+    const int body = node.children[0];
     const int m = c_.inputs();
     RatePoly<T> total;
-    if (&word == words().sum_j) {
+    if (node.op == Op::SumJ) {
       for (int j = 1; j <= m; ++j) {
         IndexBindings inner = b;
         inner.j = j;
-        RatePoly<T> t;
+        Scalar t;
         if (!summand(body, inner, t, {j})) continue;
-        for (const auto& [mono, coef] : t.terms()) {
-          if (!involves_input(mono, j)) {
-            note("sum_j(...) has a term without a rate of j (" + monomial_label(mono) + "): its total depends on n");
-            break;
-          }
-        }
-        total += t;
+        check_terms(t, [j](const Monomial& mono) { return involves_input(mono, j); }, [](const Monomial& mono) {
+          return "sum_j(...) has a term without a rate of j (" + monomial_label(mono) + "): its total depends on n";
+        });
+        t.add_to(total);
       }
       return total;
     }
-    const bool ordered = &word == words().sum_pairs;
+    const bool ordered = node.op == Op::SumPairs;
     for (int j = 1; j <= m; ++j)
       for (int l = ordered ? 1 : j + 1; l <= m; ++l) {
         if (l == j) continue;
         IndexBindings inner = b;
         inner.j = j;
         inner.l = l;
-        RatePoly<T> t;
+        Scalar t;
         if (!summand(body, inner, t, {j, l})) continue;
-        for (const auto& [mono, coef] : t.terms()) {
-          if (!involves_input(mono, j) || !involves_input(mono, l)) {
-            note(s + "(...) has a term without rates of both j and l (" + monomial_label(mono) + ")");
-            break;
-          }
-        }
-        total += t;
+        check_terms(
+            t, [j, l](const Monomial& mono) { return involves_input(mono, j) && involves_input(mono, l); },
+            [&](const Monomial& mono) {
+              return node.word->name + "(...) has a term without rates of both j and l (" + monomial_label(mono) + ")";
+            });
+        t.add_to(total);
       }
     return total;
   }
 
+  /// Notes the first term of t that is not `local` (at most one note per summand).
+  template <class Local, class Message>
+  void check_terms(const Scalar& t, Local local, Message message) {
+    if (!t.is_poly) {
+      if (!local(t.m)) note(message(t.m));
+      return;
+    }
+    for (const auto& [mono, coef] : t.p.terms())
+      if (!local(mono)) {
+        note(message(mono));
+        return;
+      }
+  }
+
   /// Evaluates one term of a sum; in partial mode an undefined quantity records the term's
   /// inputs as undefined and returns false.
-  bool summand(const GiNaC::ex& body, const IndexBindings& b, RatePoly<T>& out, std::initializer_list<int> inputs) {
+  bool summand(int body, const IndexBindings& b, Scalar& out, std::initializer_list<int> inputs) {
     if (!partial_) {
-      out = scalar(body, b);
+      out = scalar_of(body, b);
       return true;
     }
     try {
-      out = scalar(body, b);
+      out = scalar_of(body, b);
       return true;
     } catch (const UndefinedQuantity& u) {
       std::vector<int> key(inputs);
@@ -530,7 +537,11 @@ class ClaimEvaluator {
   std::vector<T> divisors_;
   bool partial_ = false;
   std::map<std::vector<int>, Undefined> undefined_inputs_;
-  std::map<std::pair<const Word*, const GiNaC::basic*>, IndexForm> index_forms_;
+  const ClaimProgram* program_ = nullptr;  ///< the program scalar() evaluates
+  /// Per program: whether each index's locality note has been made (an evaluator may evaluate
+  /// several expressions: both sides of a claim).
+  std::map<const ClaimProgram*, std::vector<char>> noted_;
+  std::vector<char>* noted_now_ = nullptr;
 };
 
 }  // namespace linkproof

@@ -197,9 +197,8 @@ class RatePoly {
     return a;
   }
 
- private:
-  /// Appends c * m. While the terms are sorted, the last is the only one of its monomial and a
-  /// term of that monomial is added to it at once; once they are not, adding must wait for
+  /// Adds c * m in place. While the terms are sorted, the last is the only one of its monomial
+  /// and a term of that monomial is added to it at once; once they are not, adding must wait for
   /// normalize(), which keeps the order of arrival.
   void add(const Monomial& m, T c) {
     if (sorted_ && !terms_.empty()) {
@@ -212,6 +211,8 @@ class RatePoly {
     }
     terms_.emplace_back(m, std::move(c));
   }
+
+ private:
   /// Sorts the terms by monomial (stably: the order of arrival is kept within a monomial) and
   /// adds those of one monomial from left to right.
   void normalize() const {
