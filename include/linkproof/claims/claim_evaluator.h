@@ -388,21 +388,25 @@ class ClaimEvaluator {
   }
 
   /// sum_j ([omega-dot_j] omega-dot_j + [omega_j^2] omega_j^2) + sum_{j<l} [omega_j omega_l] omega_j omega_l
-  /// for the inputs in `only` (0: all), from engine coefficients.
+  /// from engine coefficients; `only_j` (a four-bar's, which has one input): as the rates of input
+  /// only_j. Each monomial occurs once, so the terms are appended in the monomials' order (no
+  /// sorting); each coefficient is c * 1 (* 1) as the product of c with its rate variables.
   RatePoly<T> acceleration_poly(const TermCoefficients<T>& tc, int only_j) {
-    RatePoly<T> p;
     const int m = static_cast<int>(tc.omega_dot.size());
+    if (only_j && m != 1) throw InternalError("acceleration_poly: a four-bar's coefficients with " + std::to_string(m) + " inputs");
+    const T one = from_int<T>(1);
+    const auto id = [](int j, RateVariable::Kind kind) { return RateVariable{j, kind}.id(); };
+    RatePoly<T> p;
     for (int j = 1; j <= m; ++j) {
-      const auto k = static_cast<size_t>(j - 1);
       const int as = only_j ? only_j : j;
-      const auto w = RatePoly<T>::variable({as, RateVariable::Omega});
-      p += RatePoly<T>(tc.omega_dot[k]) * RatePoly<T>::variable({as, RateVariable::OmegaDot});
-      p += RatePoly<T>(tc.omega_sq[k]) * w * w;
-    }
-    for (int j = 1; j <= m; ++j)
+      // In the monomials' order: omega_j^2 < omega_j omega_l (l > j) < omega-dot_j < omega_{j+1} ...
+      p.add(Monomial{id(as, RateVariable::Omega), id(as, RateVariable::Omega)},
+            tc.omega_sq[static_cast<size_t>(j - 1)] * one * one);
       for (int l = j + 1; l <= m; ++l)
-        p += RatePoly<T>(tc.omega_pair[pair_index(j, l, m)]) * RatePoly<T>::variable({j, RateVariable::Omega}) *
-             RatePoly<T>::variable({l, RateVariable::Omega});
+        p.add(Monomial{id(j, RateVariable::Omega), id(l, RateVariable::Omega)},
+              tc.omega_pair[pair_index(j, l, m)] * one * one);
+      p.add(Monomial{id(as, RateVariable::OmegaDot)}, tc.omega_dot[static_cast<size_t>(j - 1)] * one);
+    }
     return p;
   }
 

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
+#include <vector>
 #include <string>
 
 #include "linkproof/claims/claim.h"
@@ -35,10 +35,12 @@ struct SideValue {
 
   /// The coefficient of m; throws UndefinedQuantity if m involves an undefined input.
   T coefficient(const Monomial& m) const {
-    const std::vector<int> idx = monomial_indices(m);
-    for (const auto& [inputs, u] : undefined_inputs)
-      if (std::includes(idx.begin(), idx.end(), inputs.begin(), inputs.end()))
-        throw UndefinedQuantity(u.quantity, u.reason);
+    if (!undefined_inputs.empty()) {
+      const std::vector<int> idx = monomial_indices(m);
+      for (const auto& [inputs, u] : undefined_inputs)
+        if (std::includes(idx.begin(), idx.end(), inputs.begin(), inputs.end()))
+          throw UndefinedQuantity(u.quantity, u.reason);
+    }
     return poly.get().coefficient(m);
   }
   /// The value at the given rates; throws UndefinedQuantity if any term was left out.
@@ -77,14 +79,28 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
     // Term by term, if either side is a polynomial of positive degree in the rates.
     if (!l.poly.has_value() || !r.poly.has_value() || (l.poly.get().is_constant() && r.poly.get().is_constant()))
       return;
-    std::set<Monomial> monomials;
-    for (const auto& t : l.poly.get().terms()) monomials.insert(t.first);
-    for (const auto& t : r.poly.get().terms()) monomials.insert(t.first);
+    // Every monomial of either side, in order, once (both term lists are sorted: merged).
+    std::vector<Monomial> monomials;
+    const auto &lt = l.poly.get().terms(), &rt = r.poly.get().terms();
+    monomials.reserve(lt.size() + rt.size());
+    for (size_t a = 0, b = 0; a < lt.size() || b < rt.size();) {
+      if (b == rt.size() || (a < lt.size() && lt[a].first < rt[b].first)) monomials.push_back(lt[a++].first);
+      else if (a == lt.size() || rt[b].first < lt[a].first) monomials.push_back(rt[b++].first);
+      else monomials.push_back((++b, lt[a++].first));
+    }
+    bool left_out = false;
     for (const auto* side : {&l, &r})
       for (const auto& u : side->undefined_inputs)  // the left-out terms: at least their own monomials
         if (u.first.size() == 1)
-          for (auto kind : {RateVariable::Omega, RateVariable::OmegaDot})
-            monomials.insert(Monomial{RateVariable{u.first[0], kind}.id()});
+          for (auto kind : {RateVariable::Omega, RateVariable::OmegaDot}) {
+            monomials.push_back(Monomial{RateVariable{u.first[0], kind}.id()});
+            left_out = true;
+          }
+    if (left_out) {
+      std::sort(monomials.begin(), monomials.end());
+      monomials.erase(std::unique(monomials.begin(), monomials.end()), monomials.end());
+    }
+    s.terms.reserve(s.terms.size() + monomials.size());
     double scale = 0;
     if constexpr (!ScalarTraits<T>::is_exact)
       for (const auto* p : {&l.poly.get(), &r.poly.get()})
