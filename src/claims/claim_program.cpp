@@ -19,6 +19,25 @@ const GiNaC::symbol& index_symbol(const char* name) {
   return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
 }
 
+/// The quantity a word with a value reads; a word of the vocabulary without one is a bug.
+Quantity quantity_of(const Word& w) {
+  using Q = Quantity;
+  static const std::unordered_map<std::string, Quantity> table = {
+      {"omega_out", Q::OmegaOut}, {"omega_cpl", Q::OmegaCpl}, {"omega_dot_out", Q::OmegaDotOut},
+      {"omega_dot_cpl", Q::OmegaDotCpl}, {"D", Q::D}, {"cot_phi", Q::CotPhi}, {"rho", Q::Rho},
+      {"rho_companion", Q::RhoCompanion}, {"omega", Q::Omega}, {"omega_dot", Q::OmegaDot}, {"i_out", Q::IOut},
+      {"i_cpl", Q::ICpl}, {"cot_beta", Q::CotBeta}, {"cot_gamma", Q::CotGamma}, {"lambda", Q::Lambda}, {"mu", Q::Mu},
+      {"i_out_closed", Q::IOutClosed}, {"i_cpl_closed", Q::ICplClosed}, {"lambda_closed", Q::LambdaClosed},
+      {"mu_closed", Q::MuClosed}, {"fourbar_ratio_out", Q::FourbarRatioOut}, {"fourbar_ratio_cpl", Q::FourbarRatioCpl},
+      {"fourbar_omega_out", Q::FourbarOmegaOut}, {"fourbar_omega_cpl", Q::FourbarOmegaCpl},
+      {"fourbar_omega_dot_out", Q::FourbarOmegaDotOut}, {"fourbar_omega_dot_cpl", Q::FourbarOmegaDotCpl},
+      {"Kp", Q::Kp}, {"Q", Q::Q}, {"Pp", Q::Pp}, {"r", Q::R}, {"K", Q::K}, {"acc", Q::Acc},
+      {"side_omega", Q::SideOmega}, {"side_omega_dot", Q::SideOmegaDot}};
+  const auto it = table.find(w.name);
+  if (it == table.end()) throw InternalError("the vocabulary's word '" + w.name + "' has no quantity to read");
+  return it->second;
+}
+
 // Mirrors the evaluation the program replaces: value() of a GiNaC expression, form_value() of a
 // canonical form's node, call() of a vocabulary word, in that order, so that errors come in the
 // same order and the nodes are evaluated in the same order.
@@ -50,6 +69,7 @@ class Compiler {
       ClaimProgram::Node n;
       n.op = Op::Global;
       n.word = &w;
+      n.quantity = quantity_of(w);
       return add(std::move(n));
     }
     if (const int code = claim_atoms::code_of_call(e); code >= 0) return call(vocabulary()[static_cast<size_t>(code)], e);
@@ -179,26 +199,21 @@ class Compiler {
         return add(std::move(n));
       }
       case WordKind::VectorFunction: return vector_function(w, e);
-      case WordKind::InputScalar:
-        n.op = Op::InputScalar;
-        n.index = index(w, a0);
-        return add(std::move(n));
-      case WordKind::InputVector:
-        n.op = Op::InputVector;
-        n.is_vector = true;
-        n.index = index(w, a0);
-        return add(std::move(n));
-      case WordKind::SideVector:
-        n.op = Op::SideVector;
-        n.is_vector = true;
-        n.index = index(w, a0);
-        return add(std::move(n));
-      case WordKind::SideScalar:
-        n.op = Op::SideScalar;
-        n.index = index(w, a0);
-        return add(std::move(n));
+      case WordKind::InputScalar: return indexed(std::move(n), Op::InputScalar, false, a0);
+      case WordKind::InputVector: return indexed(std::move(n), Op::InputVector, true, a0);
+      case WordKind::SideVector: return indexed(std::move(n), Op::SideVector, true, a0);
+      case WordKind::SideScalar: return indexed(std::move(n), Op::SideScalar, false, a0);
       default: throw error("'" + w.name + "' cannot be called");
     }
+  }
+
+  /// A quantity read at an index: word[arg].
+  int indexed(ClaimProgram::Node n, Op op, bool is_vector, const GiNaC::ex& arg) {
+    n.op = op;
+    n.is_vector = is_vector;
+    n.quantity = quantity_of(*n.word);
+    n.index = index(*n.word, arg);
+    return add(std::move(n));
   }
 
   int vector_function(const Word& w, const GiNaC::ex& e) {

@@ -2,6 +2,7 @@
 
 #include <cln/integer.h>
 #include <cln/integer_io.h>
+#include <cln/rational.h>
 #include <cln/rational_io.h>
 
 #include <cctype>
@@ -94,6 +95,14 @@ Rational parse_rational(std::string_view text) {
 }
 
 std::string format_rational(const Rational& q) {
+  // Numbers that fit a machine word (most of a check's) without a stream: constructing an
+  // ostringstream (its locale) cost more than printing (~7 % of an exact pentagon check).
+  const cln::cl_I p = cln::numerator(q), d = cln::denominator(q);
+  if (cln::integer_length(p) < 63 && cln::integer_length(d) < 63) {
+    std::string s = std::to_string(cln::cl_I_to_long(p));
+    if (d != 1) s += "/" + std::to_string(cln::cl_I_to_long(d));
+    return s;
+  }
   std::ostringstream out;
   cln::fprint(out, q);  // CLN prints reduced p/q, and integers without a denominator
   return out.str();

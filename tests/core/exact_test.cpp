@@ -4,7 +4,9 @@
 #include <rapidcheck/gtest.h>
 
 #include <cln/integer.h>
+#include <cln/rational_io.h>
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -90,6 +92,23 @@ TEST(FormatRational, PrintsIntegersWithoutDenominator) {
 TEST(FormatRational, PrintsDecimalInputAsExactFraction) {
   EXPECT_EQ(format_rational(parse_rational("0.1")), "1/10");
   EXPECT_EQ(format_rational(parse_rational("2.5e-3")), "1/400");
+}
+
+// Numbers that fit a machine word are printed without CLN's printer; on both sides of that
+// boundary the text is CLN's.
+TEST(FormatRational, PrintsAsClnDoesOnBothSidesOfTheMachineWord) {
+  const auto cln_text = [](const Rational& x) {
+    std::ostringstream out;
+    cln::fprint(out, x);
+    return out.str();
+  };
+  const cln::cl_I big = cln::expt_pos(cln::cl_I(2), 62);
+  for (const cln::cl_I& p : {cln::cl_I(0), cln::cl_I(1), cln::cl_I(-1), big - 1, big, -big, -big + 1, 2 * big, -2 * big + 1,
+                             big * big + 7})
+    for (const cln::cl_I& d : {cln::cl_I(1), cln::cl_I(3), big - 1, big + 1, 4 * big + 1}) {
+      const Rational x = Rational(p) / d;
+      EXPECT_EQ(format_rational(x), cln_text(x)) << cln_text(x);
+    }
 }
 
 // format_rational is the inverse of parse_rational on every rational p/q.

@@ -176,9 +176,9 @@ class ClaimEvaluator {
         return p;
       }
       case Op::Power: return power(scalar_of(n.children[0], b), n.exponent);
-      case Op::Global: return global(*n.word);
-      case Op::InputScalar: return input_scalar(*n.word, index(n, b, true));
-      case Op::SideScalar: return side_rate(index(n, b, false), n.word == words().side_omega_dot);
+      case Op::Global: return global(n);
+      case Op::InputScalar: return input_scalar(n, index(n, b, true));
+      case Op::SideScalar: return side_rate(index(n, b, false), n.quantity == Quantity::SideOmegaDot);
       case Op::Norm2: {
         const Vector a = vector_of(n.children[0], b);
         return plus(times(a.x, a.x), times(a.y, a.y));
@@ -235,14 +235,14 @@ class ClaimEvaluator {
       }
       case Op::InputVector: {
         const int j = index(n, b, true);
-        if (n.word == words().Kp) return vec(construction(j).k_prime);
-        if (n.word == words().Q) return vec(construction(j).q.get());
+        if (n.quantity == Quantity::Kp) return vec(construction(j).k_prime);
+        if (n.quantity == Quantity::Q) return vec(construction(j).q.get());
         return vec(construction(j).p_prime.get());
       }
       case Op::SideVector: {
         const int k = index(n, b, false);
-        if (n.word == words().r) return vec(c_.r(k));
-        if (n.word == words().K) return vec(c_.polygon.joint(k));
+        if (n.quantity == Quantity::R) return vec(c_.r(k));
+        if (n.quantity == Quantity::K) return vec(c_.polygon.joint(k));
         return acceleration_of_joint(k);
       }
       case Op::Perp: {
@@ -312,79 +312,37 @@ class ClaimEvaluator {
     return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
   }
 
-  /// The words the evaluator tells apart, looked up once: the inner loops of a sum compare
-  /// pointers, not names (string comparisons were ~10 % of a double check).
-  struct Words {
-    const Word* omega_out = &word_named("omega_out");
-    const Word* omega_cpl = &word_named("omega_cpl");
-    const Word* omega_dot_out = &word_named("omega_dot_out");
-    const Word* omega_dot_cpl = &word_named("omega_dot_cpl");
-    const Word* D = &word_named("D");
-    const Word* cot_phi = &word_named("cot_phi");
-    const Word* rho = &word_named("rho");
-    const Word* rho_companion = &word_named("rho_companion");
-    const Word* side_omega_dot = &word_named("side_omega_dot");
-    const Word* omega = &word_named("omega");
-    const Word* omega_dot = &word_named("omega_dot");
-    const Word* i_out = &word_named("i_out");
-    const Word* i_cpl = &word_named("i_cpl");
-    const Word* cot_beta = &word_named("cot_beta");
-    const Word* cot_gamma = &word_named("cot_gamma");
-    const Word* lambda = &word_named("lambda");
-    const Word* mu = &word_named("mu");
-    const Word* Kp = &word_named("Kp");
-    const Word* Q = &word_named("Q");
-    const Word* i_out_closed = &word_named("i_out_closed");
-    const Word* i_cpl_closed = &word_named("i_cpl_closed");
-    const Word* lambda_closed = &word_named("lambda_closed");
-    const Word* mu_closed = &word_named("mu_closed");
-    const Word* fourbar_ratio_out = &word_named("fourbar_ratio_out");
-    const Word* fourbar_ratio_cpl = &word_named("fourbar_ratio_cpl");
-    const Word* fourbar_omega_out = &word_named("fourbar_omega_out");
-    const Word* fourbar_omega_cpl = &word_named("fourbar_omega_cpl");
-    const Word* fourbar_omega_dot_out = &word_named("fourbar_omega_dot_out");
-    const Word* fourbar_omega_dot_cpl = &word_named("fourbar_omega_dot_cpl");
-    const Word* r = &word_named("r");
-    const Word* K = &word_named("K");
-  };
-  static const Words& words() {
-    static const Words w;
-    return w;
-  }
-
   const FourBarConstruction<T>& construction(int j) {
     return c_.construction_for(reading_.construction)[static_cast<size_t>(j - 1)];
   }
 
-  Scalar global(const Word& w) {
-    const std::string& s = w.name;
-    if (&w == words().omega_out || &w == words().omega_cpl) {
-      const auto& vc = c_.velocity_coefficients().get();
-      const auto& coef = &w == words().omega_out ? vc.first : vc.second;
-      RatePoly<T> p;
-      for (int j = 1; j <= c_.inputs(); ++j)
-        p += RatePoly<T>(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
-      return Scalar::poly(std::move(p));
+  Scalar global(const Node& n) {
+    using Q = Quantity;
+    switch (n.quantity) {
+      case Q::OmegaOut:
+      case Q::OmegaCpl: {
+        const auto& vc = c_.velocity_coefficients().get();
+        const auto& coef = n.quantity == Q::OmegaOut ? vc.first : vc.second;
+        RatePoly<T> p;
+        for (int j = 1; j <= c_.inputs(); ++j)
+          p += RatePoly<T>(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
+        return Scalar::poly(std::move(p));
+      }
+      case Q::OmegaDotOut: return Scalar::poly(acceleration_poly(c_.coefficients().get().first, 0));
+      case Q::OmegaDotCpl: return Scalar::poly(acceleration_poly(c_.coefficients().get().second, 0));
+      case Q::D: return constant(c_.closed().get().D);
+      case Q::CotPhi:
+      case Q::Rho:
+      case Q::RhoCompanion: {
+        const ClosedForms<T>& cf = c_.closed().get();
+        if (reading_.signed_phi) return constant(n.quantity == Q::CotPhi ? cf.cot_phi : n.quantity == Q::Rho ? cf.rho : cf.rho_companion);
+        // The unsigned drawn angle |phi| (erratum A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
+        const T abs_d = abs_value(cf.D);
+        const Vec2<T> a = c_.r(c_.n - 2), bb = c_.r(c_.n - 1);
+        return constant((n.quantity == Q::CotPhi ? dot(a, bb) : norm2(n.quantity == Q::Rho ? a : bb)) / abs_d);
+      }
+      default: throw error("'" + n.word->name + "' is not a number");
     }
-    if (&w == words().omega_dot_out || &w == words().omega_dot_cpl) {
-      const auto& tc = &w == words().omega_dot_out ? c_.coefficients().get().first : c_.coefficients().get().second;
-      return Scalar::poly(acceleration_poly(tc, 0));
-    }
-    const ClosedForms<T>& cf = c_.closed().get();
-    if (&w == words().D) return constant(cf.D);
-    if (reading_.signed_phi) {
-      if (&w == words().cot_phi) return constant(cf.cot_phi);
-      if (&w == words().rho) return constant(cf.rho);
-      if (&w == words().rho_companion) return constant(cf.rho_companion);
-    } else {
-      // The unsigned drawn angle |phi| (erratum A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
-      const T abs_d = abs_value(cf.D);
-      const Vec2<T> a = c_.r(c_.n - 2), bb = c_.r(c_.n - 1);
-      if (&w == words().cot_phi) return constant(dot(a, bb) / abs_d);
-      if (&w == words().rho) return constant(norm2(a) / abs_d);
-      if (&w == words().rho_companion) return constant(norm2(bb) / abs_d);
-    }
-    throw error("'" + s + "' is not a number");
   }
 
   /// sum_j ([omega-dot_j] omega-dot_j + [omega_j^2] omega_j^2) + sum_{j<l} [omega_j omega_l] omega_j omega_l
@@ -410,29 +368,30 @@ class ClaimEvaluator {
     return p;
   }
 
-  Scalar input_scalar(const Word& word, int j) {
-    const std::string& s = word.name;
+  Scalar input_scalar(const Node& n, int j) {
+    using Q = Quantity;
     const auto k = static_cast<size_t>(j - 1);
-    if (&word == words().omega) return rate(j, RateVariable::Omega);
-    if (&word == words().omega_dot) return rate(j, RateVariable::OmegaDot);
-    if (&word == words().i_out) return constant(construction(j).i_out.get());
-    if (&word == words().i_cpl) return constant(construction(j).i_cpl.get());
-    if (&word == words().cot_beta) return constant(construction(j).cot_beta.get());
-    if (&word == words().cot_gamma) return constant(construction(j).cot_gamma.get());
-    if (&word == words().lambda) return constant(construction(j).lambda.get());
-    if (&word == words().mu) return constant(construction(j).mu.get());
-    if (&word == words().i_out_closed) return constant(c_.closed().get().i_out[k]);
-    if (&word == words().i_cpl_closed) return constant(c_.closed().get().i_cpl[k]);
-    if (&word == words().lambda_closed) return constant(c_.closed().get().lambda[k]);
-    if (&word == words().mu_closed) return constant(c_.closed().get().mu[k]);
-    const FourBarTruth<T>& fb = c_.four_bar(static_cast<int>(k) + 1);
-    if (&word == words().fourbar_ratio_out) return constant(fb.ratio_out.get());
-    if (&word == words().fourbar_ratio_cpl) return constant(fb.ratio_cpl.get());
-    if (&word == words().fourbar_omega_out) return times(constant(fb.ratio_out.get()), rate(j, RateVariable::Omega));
-    if (&word == words().fourbar_omega_cpl) return times(constant(fb.ratio_cpl.get()), rate(j, RateVariable::Omega));
-    if (&word == words().fourbar_omega_dot_out) return Scalar::poly(acceleration_poly(fb.coefficients.get().first, j));
-    if (&word == words().fourbar_omega_dot_cpl) return Scalar::poly(acceleration_poly(fb.coefficients.get().second, j));
-    throw error("'" + s + "' is not an input quantity");
+    switch (n.quantity) {
+      case Q::Omega: return rate(j, RateVariable::Omega);
+      case Q::OmegaDot: return rate(j, RateVariable::OmegaDot);
+      case Q::IOut: return constant(construction(j).i_out.get());
+      case Q::ICpl: return constant(construction(j).i_cpl.get());
+      case Q::CotBeta: return constant(construction(j).cot_beta.get());
+      case Q::CotGamma: return constant(construction(j).cot_gamma.get());
+      case Q::Lambda: return constant(construction(j).lambda.get());
+      case Q::Mu: return constant(construction(j).mu.get());
+      case Q::IOutClosed: return constant(c_.closed().get().i_out[k]);
+      case Q::ICplClosed: return constant(c_.closed().get().i_cpl[k]);
+      case Q::LambdaClosed: return constant(c_.closed().get().lambda[k]);
+      case Q::MuClosed: return constant(c_.closed().get().mu[k]);
+      case Q::FourbarRatioOut: return constant(c_.four_bar(j).ratio_out.get());
+      case Q::FourbarRatioCpl: return constant(c_.four_bar(j).ratio_cpl.get());
+      case Q::FourbarOmegaOut: return times(constant(c_.four_bar(j).ratio_out.get()), rate(j, RateVariable::Omega));
+      case Q::FourbarOmegaCpl: return times(constant(c_.four_bar(j).ratio_cpl.get()), rate(j, RateVariable::Omega));
+      case Q::FourbarOmegaDotOut: return Scalar::poly(acceleration_poly(c_.four_bar(j).coefficients.get().first, j));
+      case Q::FourbarOmegaDotCpl: return Scalar::poly(acceleration_poly(c_.four_bar(j).coefficients.get().second, j));
+      default: throw error("'" + n.word->name + "' is not an input quantity");
+    }
   }
 
   /// omega_{k,n} or omega-dot_{k,n} of side k as a polynomial in the input rates.

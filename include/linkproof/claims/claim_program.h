@@ -22,12 +22,26 @@
 #include <cln/rational.h>
 #include <ginac/ginac.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "linkproof/claims/vocabulary.h"
 
 namespace linkproof {
+
+/// What a word reads, for the evaluator's switch: one per word with a value (the vocabulary's
+/// global quantities, input quantities and vectors, side vectors and rates; vocabulary.cpp says
+/// what each means).
+enum class Quantity : std::uint8_t {
+  None,  ///< sums, vector functions, constants
+  OmegaOut, OmegaCpl, OmegaDotOut, OmegaDotCpl, D, CotPhi, Rho, RhoCompanion,
+  Omega, OmegaDot, IOut, ICpl, CotBeta, CotGamma, Lambda, Mu, IOutClosed, ICplClosed, LambdaClosed, MuClosed,
+  FourbarRatioOut, FourbarRatioCpl, FourbarOmegaOut, FourbarOmegaCpl, FourbarOmegaDotOut, FourbarOmegaDotCpl,
+  Kp, Q, Pp,
+  R, K, Acc,
+  SideOmega, SideOmegaDot,
+};
 
 struct ClaimProgram {
   enum class Op {
@@ -61,7 +75,8 @@ struct ClaimProgram {
   struct Node {
     Op op = Op::Constant;
     bool is_vector = false;
-    const Word* word = nullptr;
+    const Word* word = nullptr;       ///< for messages
+    Quantity quantity = Quantity::None;
     int index = -1;                   ///< into indexes
     int exponent = 1;                 ///< Power
     bool small_integer = false;       ///< Constant, Scale: the constant is `integer`

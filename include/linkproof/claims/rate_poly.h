@@ -82,8 +82,15 @@ class Monomial {
 
   // Slot i holds id + 1 in 16 bits, slot 0 in the highest bits of the first word and unused
   // slots 0, so that comparing the words compares the ids lexicographically.
-  friend auto operator<=>(const Monomial&, const Monomial&) = default;
-  friend bool operator==(const Monomial&, const Monomial&) = default;
+  // Written out: the defaulted operators compare the std::array through a memcmp call (~5 %
+  // of a double check).
+  friend std::strong_ordering operator<=>(const Monomial& a, const Monomial& b) {
+    if (a.words_[0] != b.words_[0]) return a.words_[0] <=> b.words_[0];
+    return a.words_[1] <=> b.words_[1];
+  }
+  friend bool operator==(const Monomial& a, const Monomial& b) {
+    return a.words_[0] == b.words_[0] && a.words_[1] == b.words_[1];
+  }
 
  private:
   static int shift(int i) { return 48 - 16 * (i % 4); }
