@@ -117,6 +117,15 @@ const std::vector<Case>& corpus() {
                                          ::testing::TempDir() + "ill_formed_report"};
        },
        2, "division by an expression that contains rates", "", ""},
+      // Ill formed at every n, also where its sum has no terms: on a four-bar (no pairs) the sum
+      // was 0 and the claim was judged as if well formed (with lhs 0 it "held") until claims
+      // were compiled, and typed, once (ClaimProgram.*).
+      {"AProductOfVectorsInASumOverNoPairs",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("vec5.yaml", claim_file("sum_pairs(r[j]*r[l])")),
+                                         "--scene", write_temp("fourbar.yaml", "name: fourbar\npolygon:\n  joints: [[0,0],[1,3],[4,4],[5,0]]\n  omega: [2]\n  omega_dot: [1]\n")};
+       },
+       2, "claim 'c1': product of two vectors", "", ""},
       {"ATermOfDegreeNineInTheRates",  // RatePoly's monomials hold 8 rates (docs/limits.md)
        [] { return std::vector<std::string>{"check-claim", write_temp("deg9.yaml", claim_file("omega[1]^9"))}; },
        2, "degree 9 in the rates", "", ""},

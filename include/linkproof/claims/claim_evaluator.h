@@ -23,6 +23,7 @@
 #include "linkproof/claims/claim_program.h"
 #include "linkproof/claims/polygon_context.h"
 #include "linkproof/claims/rate_poly.h"
+#include "linkproof/claims/rate_value.h"
 #include "linkproof/claims/vocabulary.h"
 #include "linkproof/core/symbolic_scalar.h"
 
@@ -54,7 +55,7 @@ class ClaimEvaluator {
     noted.resize(p.indexes.size());
     program_ = &p;
     noted_now_ = &noted;
-    return scalar_of(p.root, b).to_poly_moved();
+    return std::move(scalar_of(p.root, b)).to_poly();
   }
 
   /// Where the expression is not local (see above); empty if it is.
@@ -81,65 +82,16 @@ class ClaimEvaluator {
   using Op = ClaimProgram::Op;
   using Node = ClaimProgram::Node;
 
-  /// A number: one term c * m (no allocation, and most values of a claim are one term: a
-  /// constant, a rate, a product of them) or a polynomial. Each operation does on the
-  /// coefficients what the same operation on polynomials (rate_poly.h) does, in the same order,
-  /// so the results are the same bytes as evaluating with polynomials throughout.
-  struct Scalar {
-    bool is_poly = false;
-    Monomial m;
-    T c;
-    RatePoly<T> p;
-    static Scalar term(T c, Monomial m = {}) {
-      Scalar s;
-      s.c = std::move(c);
-      s.m = m;
-      return s;
-    }
-    static Scalar poly(RatePoly<T> q) {
-      Scalar s;
-      s.is_poly = true;
-      s.p = std::move(q);
-      return s;
-    }
-    RatePoly<T> to_poly_moved() { return std::move(*this).to_poly(); }
-    RatePoly<T> to_poly() && {
-      if (is_poly) return std::move(p);
-      RatePoly<T> q;
-      q.add(m, std::move(c));
-      return q;
-    }
-    /// Adds *this to `total` in place.
-    void add_to(RatePoly<T>& total) const {
-      if (is_poly) total += p;
-      else total.add(m, c);
-    }
-  };
+  using Scalar = RateValue<T>;
   struct Vector {
     Scalar x, y;
   };
-
-  static Scalar plus(Scalar a, const Scalar& b) {
-    if (!a.is_poly && !b.is_poly && a.m == b.m) {
-      a.c = a.c + b.c;
-      return a;
-    }
-    RatePoly<T> s = std::move(a).to_poly();
-    b.add_to(s);
-    return Scalar::poly(std::move(s));
-  }
-  static Scalar negated(const Scalar& a) {
-    if (!a.is_poly) return Scalar::term(-a.c, a.m);
-    return Scalar::poly(-a.p);
-  }
-  /// a - b as a + (-b), which is what RatePoly's subtraction computes.
-  static Scalar minus(Scalar a, const Scalar& b) { return plus(std::move(a), negated(b)); }
-  static Scalar times(const Scalar& a, const Scalar& b) {
-    if (!a.is_poly && !b.is_poly) return Scalar::term(a.c * b.c, Monomial::product(a.m, b.m));
-    return Scalar::poly(Scalar(a).to_poly() * Scalar(b).to_poly());
-  }
-  static Vector times(const Vector& a, const Scalar& b) { return {times(a.x, b), times(a.y, b)}; }
-  static Vector times(const Scalar& a, const Vector& b) { return {times(a, b.x), times(a, b.y)}; }
+  static Scalar plus(Scalar a, const Scalar& b) { return std::move(a) + b; }
+  static Scalar minus(Scalar a, const Scalar& b) { return std::move(a) - b; }
+  static Scalar negated(const Scalar& a) { return -a; }
+  static Scalar times(const Scalar& a, const Scalar& b) { return a * b; }
+  static Vector times(const Vector& a, const Scalar& b) { return {a.x * b, a.y * b}; }
+  static Vector times(const Scalar& a, const Vector& b) { return {a * b.x, a * b.y}; }
 
   static Scalar constant(const T& x) { return Scalar::term(x); }
   static Scalar constant(long k) { return Scalar::term(from_int<T>(k)); }
@@ -260,13 +212,13 @@ class ClaimEvaluator {
     Scalar r = constant(1);
     for (int q = 0; q < std::abs(k); ++q) r = times(r, f);
     if (k > 0) return r;
-    if (!r.is_poly && r.m.empty()) {
+    if (r.is_term() && r.monomial().empty()) {
       // Tested like every divisor of the construction: exactly (a symbolic proof records it in
       // its exceptional set; an exact check reports the claim undefined where it vanishes).
-      if (linkproof::is_zero(r.c))
+      if (linkproof::is_zero(r.coefficient()))
         throw UndefinedQuantity("a divisor in the claim's expression", "it is zero at this configuration");
-      Scalar inverse = constant(from_int<T>(1) / r.c);
-      divisors_.push_back(r.c);
+      Scalar inverse = constant(from_int<T>(1) / r.coefficient());
+      divisors_.push_back(r.coefficient());
       return inverse;
     }
     RatePoly<T> d = std::move(r).to_poly();
@@ -465,11 +417,11 @@ class ClaimEvaluator {
   /// Notes the first term of t that is not `local` (at most one note per summand).
   template <class Local, class Message>
   void check_terms(const Scalar& t, Local local, Message message) {
-    if (!t.is_poly) {
-      if (!local(t.m)) note(message(t.m));
+    if (t.is_term()) {
+      if (!local(t.monomial())) note(message(t.monomial()));
       return;
     }
-    for (const auto& [mono, coef] : t.p.terms())
+    for (const auto& [mono, coef] : t.polynomial().terms())
       if (!local(mono)) {
         note(message(mono));
         return;
