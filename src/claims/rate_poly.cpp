@@ -1,19 +1,32 @@
 #include "linkproof/claims/rate_poly.h"
 
 #include <algorithm>
+#include <charconv>
 
 namespace linkproof {
 
 std::string monomial_label(const Monomial& m) {
   if (m.empty()) return "1";
+  // Written into one buffer (a label per compared monomial: m^2 of them per claim at n sides).
   std::string s;
+  s.reserve(12 * static_cast<size_t>(m.size()));
+  char digits[16];
+  const auto number = [&](int k) {
+    const auto end = std::to_chars(digits, digits + sizeof digits, k).ptr;
+    s.append(digits, end);
+  };
   for (int i = 0; i < m.size();) {
     int k = i;
     while (k < m.size() && m[k] == m[i]) ++k;
     const RateVariable v = RateVariable::from_id(m[i]);
-    if (!s.empty()) s += "*";
-    s += (v.kind == RateVariable::Omega ? "omega[" : "omega_dot[") + std::to_string(v.index) + "]";
-    if (k - i > 1) s += "^" + std::to_string(k - i);
+    if (!s.empty()) s += '*';
+    s += v.kind == RateVariable::Omega ? "omega[" : "omega_dot[";
+    number(v.index);
+    s += ']';
+    if (k - i > 1) {
+      s += '^';
+      number(k - i);
+    }
     i = k;
   }
   return s;

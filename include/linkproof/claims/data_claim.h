@@ -34,14 +34,18 @@ struct SideValue {
   std::map<std::vector<int>, typename ClaimEvaluator<T>::Undefined> undefined_inputs;
 
   /// The coefficient of m; throws UndefinedQuantity if m involves an undefined input.
-  T coefficient(const Monomial& m) const {
+  /// Monomials are read in ascending order: the search starts at `from` (where the previous one
+  /// ended), so reading every monomial is one pass over the terms.
+  T coefficient(const Monomial& m, size_t& from) const {
     if (!undefined_inputs.empty()) {
       const std::vector<int> idx = monomial_indices(m);
       for (const auto& [inputs, u] : undefined_inputs)
         if (std::includes(idx.begin(), idx.end(), inputs.begin(), inputs.end()))
           throw UndefinedQuantity(u.quantity, u.reason);
     }
-    return poly.get().coefficient(m);
+    const auto& t = poly.get().terms();
+    while (from < t.size() && t[from].first < m) ++from;
+    return from < t.size() && t[from].first == m ? t[from].second : from_int<T>(0);
   }
   /// The value at the given rates; throws UndefinedQuantity if any term was left out.
   T total(const std::vector<T>& w, const std::vector<T>& wd) const {
@@ -105,9 +109,10 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
     if constexpr (!ScalarTraits<T>::is_exact)
       for (const auto* p : {&l.poly.get(), &r.poly.get()})
         for (const auto& t : p->terms()) scale = std::max(scale, std::abs(ScalarTraits<T>::to_double(t.second)));
+    size_t at_l = 0, at_r = 0;
     for (const Monomial& m : monomials) {
       s.terms.push_back(compare<T>((prefix.empty() ? "" : prefix + ": ") + monomial_label(m),
-                                   [&] { return l.coefficient(m); }, [&] { return r.coefficient(m); }));
+                                   [&] { return l.coefficient(m, at_l); }, [&] { return r.coefficient(m, at_r); }));
       s.terms.back().scale = scale;
     }
   };

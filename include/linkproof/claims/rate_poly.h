@@ -190,6 +190,20 @@ class RatePoly {
       for (const auto& [mb, cb] : tb) p.add(Monomial::product(ma, mb), ca * cb);
     return p;
   }
+  /// c * b and b * c for a constant c: the product with the constant polynomial c, term by term
+  /// in the same order (c * coefficient, or coefficient * c), without merging.
+  RatePoly left_scaled(const T& c) const {
+    RatePoly p = *this;
+    p.normalize();
+    for (auto& [m, k] : p.terms_) k = c * k;
+    return p;
+  }
+  RatePoly right_scaled(const T& c) const {
+    RatePoly p = *this;
+    p.normalize();
+    for (auto& [m, k] : p.terms_) k = k * c;
+    return p;
+  }
   /// Division by a rate-free polynomial; anything else is an InputError of the claim.
   friend RatePoly operator/(RatePoly a, const RatePoly& b) {
     if (!b.is_constant())

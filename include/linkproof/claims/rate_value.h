@@ -69,6 +69,9 @@ class RateValue {
   friend RateValue operator-(RateValue a, const RateValue& b) { return std::move(a) + (-b); }
   friend RateValue operator*(const RateValue& a, const RateValue& b) {
     if (!a.is_poly_ && !b.is_poly_) return term(a.c_ * b.c_, Monomial::product(a.m_, b.m_));
+    // A constant times a polynomial (a scaled sum, cot_phi * sum_pairs(...)): its terms in order.
+    if (!a.is_poly_ && a.m_.empty()) return poly(b.p_.left_scaled(a.c_));
+    if (!b.is_poly_ && b.m_.empty()) return poly(a.p_.right_scaled(b.c_));
     return poly(RateValue(a).to_poly() * RateValue(b).to_poly());
   }
 
