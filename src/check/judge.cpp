@@ -26,7 +26,7 @@ bool undefined_side(const Comparison<T>& c, ComparisonOutcome& out) {
 
 ComparisonOutcome judge_exact(const Comparison<Rational>& c) {
   ComparisonOutcome out;
-  out.label = c.label;
+  out.label = c.full_label();
   if (undefined_side(c, out)) return out;
   const Rational& l = c.lhs.get();
   const Rational& r = c.rhs.get();
@@ -147,7 +147,7 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
   using Ops = JudgeOps<F>;
   using TT = TrackedTraits<F>;
   ComparisonOutcome out;
-  out.label = c.label;
+  out.label = c.full_label();
   if (undefined_side(c, out)) return out;
   const Tracked<F>& l = c.lhs.get();
   const Tracked<F>& r = c.rhs.get();

@@ -27,14 +27,14 @@ TEST(KoshelPrintedChain, EveryPrintedStepIsConsistentExceptSeven) {
       EXPECT_EQ(i.lhs.get() - i.rhs.get(), Rational(-9) / 40) << "52.9 - 53.125";
     } else {
       EXPECT_EQ(c.info.expected, Expectation::Holds) << c.info.id;
-      EXPECT_TRUE(equal) << c.info.id << ": " << i.label;
+      EXPECT_TRUE(equal) << c.info.id << ": " << i.full_label();
     }
   }
 }
 
 TEST(KoshelPrintedChain, ToleranceIsHalfAUnitOfTheLastPrintedDigit) {
   for (const auto& c : catalogues::koshel_printed_chain()) {
-    const std::string label = evaluate(c).instances[0].label;
+    const std::string label = evaluate(c).instances[0].full_label();
     if (c.info.id == "koshel.eq3") {
       EXPECT_NE(label.find("(tolerance 1/2)"), std::string::npos) << label;
     } else if (c.info.id == "koshel.eq2") {

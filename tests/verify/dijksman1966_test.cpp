@@ -156,11 +156,11 @@ TEST(Dijksman1966MustFail, WrongTermIsNamedNotJustTheTotal) {
   int pair_terms = 0;
   for (const auto& t : sides.terms) {
     const Verdict v = judge(t).verdict;
-    if (t.label.find("omega[") != t.label.rfind("omega[")) {
+    if (t.full_label().find("omega[") != t.full_label().rfind("omega[")) {
       ++pair_terms;
-      EXPECT_EQ(v, Verdict::Fails) << t.label;
+      EXPECT_EQ(v, Verdict::Fails) << t.full_label();
     } else {
-      EXPECT_EQ(v, Verdict::Holds) << t.label;
+      EXPECT_EQ(v, Verdict::Holds) << t.full_label();
     }
   }
   EXPECT_EQ(pair_terms, 3);  // omega_1 omega_2, omega_1 omega_3, omega_2 omega_3

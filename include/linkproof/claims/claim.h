@@ -11,11 +11,13 @@
 
 #include <exception>
 #include <functional>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "linkproof/claims/polygon_context.h"
+#include "linkproof/claims/rate_poly.h"
 #include "linkproof/core/multiprecision.h"
 #include "linkproof/core/verdict.h"
 
@@ -44,12 +46,19 @@ void refuse_if_ill_formed_user_claim(const ClaimInfo& info, const std::exception
 
 template <class T>
 struct Comparison {
-  std::string label;  ///< "j=1", "total", "omega_dot[1]", "omega[1]*omega[2]", ...
+  /// The label ("j=1", "total", ...) or, for a term's comparison, its head ("" or "j=1: "),
+  /// the monomial's label following it: read full_label().
+  std::string label_head;
   Defined<T> lhs, rhs;
   /// Floating point: the magnitude the error bound is judged against, if larger than
   /// max(|lhs|, |rhs|). For one coefficient of a polynomial it is the polynomial's largest
   /// coefficient: a coefficient that is exactly 0 is then confirmed to the polynomial's accuracy.
   double scale = 0;
+  /// A term's comparison: its monomial. Its label is written only when the comparison is judged
+  /// with its text: a sweep judges the verdicts of all m^2 terms and writes the text of one.
+  std::optional<Monomial> monomial;
+  /// "total", "j=1", "omega_dot[1]", "j=2: omega[1]*omega[2]", ...
+  std::string full_label() const { return monomial ? label_head + monomial_label(*monomial) : label_head; }
 };
 
 template <class T>

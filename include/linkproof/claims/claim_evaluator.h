@@ -21,6 +21,7 @@
 
 #include "linkproof/claims/claim_expression.h"
 #include "linkproof/claims/claim_program.h"
+#include "linkproof/claims/pair_sum.h"
 #include "linkproof/claims/polygon_context.h"
 #include "linkproof/claims/rate_poly.h"
 #include "linkproof/claims/rate_value.h"
@@ -395,7 +396,9 @@ class ClaimEvaluator {
       }
       return total;
     }
+    // Ordered pairs: omega_a omega_b receives (a, b) and later (b, a), out of order (pair_sum.h).
     const bool ordered = node.op == Op::SumPairs;
+    PairSum<T> pairs(ordered ? m : 0);
     for (int j = 1; j <= m; ++j)
       for (int l = ordered ? 1 : j + 1; l <= m; ++l) {
         if (l == j) continue;
@@ -409,9 +412,11 @@ class ClaimEvaluator {
             [&](const Monomial& mono) {
               return node.word->name + "(...) has a term without rates of both j and l (" + monomial_label(mono) + ")";
             });
-        t.add_to(total);
+        if (!ordered) t.add_to(total);
+        else if (t.is_term()) pairs.add(t.monomial(), t.coefficient());
+        else pairs.add(t.polynomial());
       }
-    return total;
+    return ordered ? pairs.total() : total;
   }
 
   /// Notes the first term of t that is not `local` (at most one note per summand).

@@ -111,9 +111,10 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
         for (const auto& t : p->terms()) scale = std::max(scale, std::abs(ScalarTraits<T>::to_double(t.second)));
     size_t at_l = 0, at_r = 0;
     for (const Monomial& m : monomials) {
-      s.terms.push_back(compare<T>((prefix.empty() ? "" : prefix + ": ") + monomial_label(m),
-                                   [&] { return l.coefficient(m, at_l); }, [&] { return r.coefficient(m, at_r); }));
+      s.terms.push_back(compare<T>(prefix.empty() ? "" : prefix + ": ", [&] { return l.coefficient(m, at_l); },
+                                   [&] { return r.coefficient(m, at_r); }));
       s.terms.back().scale = scale;
+      s.terms.back().monomial = m;  // labelled when judged with its text
     }
   };
   if (claim.for_each_j) {
