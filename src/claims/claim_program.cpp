@@ -240,6 +240,14 @@ class Compiler {
 
 }  // namespace
 
+int ClaimProgram::Index::substituted(int n, int j, int l) const {
+  using namespace GiNaC;
+  const ex v = expression.subs(lst{index_symbol("n") == n, index_symbol("j") == j, index_symbol("l") == l});
+  if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
+    throw error("the index of " + written + " is not an integer");
+  return ex_to<numeric>(v).to_int();
+}
+
 const ClaimProgram& compiled_claim(const GiNaC::ex& e) {
   static std::unordered_map<GiNaC::ex, std::unique_ptr<const ClaimProgram>, std::hash<GiNaC::ex>, GiNaC::ex_is_equal>
       programs;

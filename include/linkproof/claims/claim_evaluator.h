@@ -231,18 +231,9 @@ class ClaimEvaluator {
   /// The value of an index (a node's), checked against [1, n - 3] for an input and [1, n] for
   /// a side, with its locality note made the first time.
   int index(const Node& node, const IndexBindings& b, bool input_index) {
-    using namespace GiNaC;
     const ClaimProgram::Index& f = program_->indexes[static_cast<size_t>(node.index)];
     const int n = c_.n;
-    int k;
-    if (f.affine) {
-      k = f.c0 + f.cn * n + f.cj * b.j + f.cl * b.l;
-    } else {
-      const ex v = f.expression.subs(lst{index_symbol("n") == n, index_symbol("j") == b.j, index_symbol("l") == b.l});
-      if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
-        throw error("the index of " + f.written + " is not an integer");
-      k = ex_to<numeric>(v).to_int();
-    }
+    const int k = f.at(n, b.j, b.l);
     const int hi = input_index ? n - 3 : n;
     if (k < 1 || k > hi)
       throw error(f.written + " = " + node.word->name + "[" + std::to_string(k) + "] is out of range 1.." +
@@ -261,9 +252,6 @@ class ClaimEvaluator {
     return k;
   }
 
-  static const GiNaC::symbol& index_symbol(const char* name) {
-    return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
-  }
 
   const FourBarConstruction<T>& construction(int j) {
     return c_.construction_for(reading_.construction)[static_cast<size_t>(j - 1)];

@@ -70,6 +70,9 @@ struct ClaimProgram {
     GiNaC::ex expression;     ///< substituted at evaluation when not affine
     std::string written;      ///< "word[index]" as the claim writes it, for messages
     std::string bound_note;   ///< the locality note of an index using j or l ("" if none)
+    /// The index at n, j, l (0: unbound); InputError if it is not an integer there.
+    int at(int n, int j, int l) const { return affine ? c0 + cn * n + cj * j + cl * l : substituted(n, j, l); }
+    int substituted(int n, int j, int l) const;
   };
 
   struct Node {
