@@ -139,10 +139,24 @@ class Scanner {
   };
   const std::vector<RawIndexUse>& index_uses() const { return uses_; }
 
+  /// The divisors as written (text between two offsets, trimmed), with their binding.
+  struct RawDivisor {
+    std::string text;
+    IndexBinding binding;
+    std::string where;
+  };
+  const std::vector<RawDivisor>& divisors() const { return divisors_; }
+
  private:
   std::string where(size_t offset) const {
     const auto [line, column] = positions_(offset);
     return context_.file + ":" + std::to_string(line) + ":" + std::to_string(column);
+  }
+
+  void note_divisor(size_t from, size_t to) {
+    std::string t = text_.substr(from, to - from);
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.pop_back();
+    divisors_.push_back({std::move(t), binding_, where(from)});
   }
 
   [[noreturn]] void fail(size_t offset, const std::string& problem) const {
@@ -200,6 +214,7 @@ class Scanner {
       fail(tokens_[i].offset, "brackets and calls are nested more than " + std::to_string(kMaxExpressionNesting) +
                                   " levels deep (docs/limits.md)");
     std::size_t best = 0, term = 0;
+    bool divides = false;  // the operand follows a '/'
     for (;;) {
       const size_t signs_at = tokens_[i].offset;
       int signs = 0;
@@ -207,11 +222,14 @@ class Scanner {
       if (signs > kMaxUnarySigns)
         fail(signs_at, std::to_string(signs) + " signs in a row; at most " + std::to_string(kMaxUnarySigns) +
                            " are accepted (docs/limits.md)");
+      const size_t operand_at = tokens_[i].offset;
       std::size_t last = operand(i, bound, in_index, depth);
       term += last;
       while (tokens_[i].kind == Tok::Op && tokens_[i].text == "^") {
         const size_t caret = tokens_[i++].offset;
-        const std::size_t e = exponent(i, caret);
+        bool negative = false;
+        const std::size_t e = exponent(i, caret, negative);
+        if (negative && !in_index) note_divisor(operand_at, caret);
         term += last * e - last;
         last *= e;
         if (tokens_[i].kind == Tok::Op && tokens_[i].text == "^")
@@ -221,8 +239,10 @@ class Scanner {
       if (term > kMaxExpressionDegree)
         fail(signs_at, "this term has degree (digits of numbers included) above " +
                            std::to_string(kMaxExpressionDegree) + ": it would expand beyond the budget (docs/limits.md)");
+      if (divides && !in_index) note_divisor(signs_at, tokens_[i].offset);
       if (tokens_[i].kind != Tok::Op) return std::max(best, term);
       const Token& op = tokens_[i++];
+      divides = op.text == "/";
       if (op.text == "+" || op.text == "-") best = std::max(best, term), term = 0;
       if (tokens_[i].kind == Tok::Op && tokens_[i].text != "-" && tokens_[i].text != "+")
         fail(tokens_[i].offset, "'" + tokens_[i].text + "' right after '" + op.text + "': an operand is missing");
@@ -233,14 +253,14 @@ class Scanner {
 
   // The exponent after '^': an integer written as a number, 2 or (-1), |e| <= kMaxExponent
   // (GiNaC would otherwise try 10^(10^10)). Returns |e|.
-  std::size_t exponent(size_t& i, size_t caret) {
+  std::size_t exponent(size_t& i, size_t caret, bool& negative) {
     const auto refuse = [&] {
       fail(caret, "the exponent of '^' must be an integer from -" + std::to_string(kMaxExponent) + " to " +
                       std::to_string(kMaxExponent) + " written as a number, as in x^2 or x^(-1) (docs/limits.md)");
     };
     const bool bracket = tokens_[i].kind == Tok::Open && tokens_[i].text == "(";
     if (bracket) ++i;
-    if (tokens_[i].kind == Tok::Op && (tokens_[i].text == "-" || tokens_[i].text == "+")) ++i;
+    if (tokens_[i].kind == Tok::Op && (tokens_[i].text == "-" || tokens_[i].text == "+")) negative = tokens_[i++].text == "-";
     if (tokens_[i].kind != Tok::Number || tokens_[i].text.size() > 3) refuse();
     const std::size_t e = std::stoul(tokens_[i++].text);
     if (e > static_cast<std::size_t>(kMaxExponent)) refuse();
@@ -384,6 +404,7 @@ class Scanner {
   std::vector<Token> tokens_;
   IndexBinding binding_ = IndexBinding::None;
   std::vector<RawIndexUse> uses_;
+  std::vector<RawDivisor> divisors_;
 };
 
 }  // namespace
@@ -428,6 +449,21 @@ ClaimExpression ClaimExpression::parse(const std::string& text, const Expression
       throw InputError(u.where, context.field, "cannot read the index of " + u.word + "[" + u.index_text + "]: " + x.what());
     }
     e.index_uses_.push_back({u.word, u.input_index, index, u.index_text, u.binding, u.where});
+  }
+  for (const auto& d : scanner.divisors()) {
+    std::string ginac_divisor = d.text;
+    for (char& ch : ginac_divisor) {
+      if (ch == '[') ch = '(';
+      if (ch == ']') ch = ')';
+    }
+    GiNaC::ex divisor;
+    try {
+      GiNaC::parser reader(atoms().symtab, /*strict=*/true, atoms().prototypes);
+      divisor = reader(ginac_divisor);  // a part of what parsed above
+    } catch (const std::exception& x) {
+      throw InputError(d.where, context.field, "cannot read the divisor " + d.text + ": " + x.what());
+    }
+    if (!GiNaC::is_exactly_a<GiNaC::numeric>(divisor)) e.divisors_.push_back({d.text, divisor, d.binding, d.where});
   }
   return e;
 }

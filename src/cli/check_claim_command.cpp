@@ -125,6 +125,7 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     o.search.n_min = lo;
     o.search.n_max = std::max(lo, std::min(hi, 8));
     if (!a.n_range.empty() && lo == hi) o.only_n = lo;
+    check_prove_limits(o.only_n, a.ladder_seconds);
     if (!a.n_range.empty() && lo != hi) o.n_max = hi;
     ProofResult r = prove_claim(engine, c, o);
     // Only a claim with no symbolic form is sampled; any other error stays an error.

@@ -2,6 +2,7 @@
 // `report` on a claim file.
 #include "command.h"
 #include "linkproof/core/error.h"
+#include "linkproof/proof/prove.h"
 
 namespace linkproof::cli {
 
@@ -22,6 +23,11 @@ std::vector<const DataClaim*> choose_claims(const ClaimFile& file, const std::ve
 void check_prove_limits(const std::optional<int>& n, double ladder_seconds) {
   if (n && (*n < 4 || *n > kMaxClaimSides))
     throw InputError("<command line>", "--n", "must be between 4 and " + std::to_string(kMaxClaimSides));
+  if (n && *n > kMaxPerNProofSides)
+    throw InputError("<command line>", "--n",
+                     "a proof at one n is limited to n <= " + std::to_string(kMaxPerNProofSides) +
+                         ": its cost grows about as n^3 (eq. 22: about 20 s at n = 20, hours at n = 200); the proof "
+                         "for every n (without --n) covers n = " + std::to_string(*n) + " (docs/limits.md)");
   if (ladder_seconds < 0 || ladder_seconds > 3600)
     throw InputError("<command line>", "--ladder-seconds", "must be between 0 and 3600");
 }

@@ -101,11 +101,20 @@ std::optional<Counterexample> find_counterexample(GroundTruthEngine& engine, con
   const int hi = claim.info.max_n ? std::min(o.n_max, claim.info.max_n) : o.n_max;
   for (int n = lo; n <= hi && !found; ++n) {
     SplitMix64 rng(o.seed * 1000003u + static_cast<std::uint64_t>(n));
-    for (int a = 0; a < o.attempts_per_n && !found; ++a) {
+    for (int a = 0; a < o.attempts_per_n + o.rational_attempts_per_n && !found; ++a) {
       TimeBudget::check("the counterexample search of " + claim.info.id + " at n = " + std::to_string(n));
-      const long range = 2 + a / 10;  // small integers first
+      const bool integer = a < o.attempts_per_n;
+      const long range = integer ? 2 + a / 10 : 4;  // small integers first
+      const auto coordinate = [&]() -> Rational {
+        if (integer) return Rational(rng.uniform(-range, range));
+        const long q = rng.uniform(2, 12);
+        return Rational(rng.uniform(-range * q, range * q)) / Rational(q);
+      };
       std::vector<Vec2<Rational>> joints;
-      for (int k = 0; k < n; ++k) joints.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});
+      for (int k = 0; k < n; ++k) {
+        Rational x = coordinate();
+        joints.push_back({std::move(x), coordinate()});
+      }
       InputRates<Rational> r;
       for (int k = 0; k < n - 3; ++k) {
         r.omega.push_back(rng.uniform(-3, 3));

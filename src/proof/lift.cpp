@@ -32,7 +32,7 @@ LiftCheck check_lift_lemma(GroundTruthEngine& engine, const DataClaim& claim, in
     b.j = j;
     for (const ClaimExpression* side : {&claim.lhs, &claim.rhs}) {
       ClaimEvaluator<ex> eval(ctx, claim.reading);
-      const RatePoly<ex> p = eval.scalar(side->expression(), b);
+      const RatePoly<ex> p = eval.scalar(*side, b);
       for (const auto& v : eval.locality_violations()) note(v);
       if (p.degree() > 2) note("degree > 2 in the rates");
       for (const auto& [monomial, coefficient] : p.terms()) {

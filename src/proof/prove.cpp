@@ -41,8 +41,8 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     IndexBindings b;
     b.j = j;
     ClaimEvaluator<ex> eval(ctx, claim.reading);
-    const RatePoly<ex> lhs = eval.scalar(claim.lhs.expression(), b);
-    const RatePoly<ex> rhs = eval.scalar(claim.rhs.expression(), b);
+    const RatePoly<ex> lhs = eval.scalar(claim.lhs, b);
+    const RatePoly<ex> rhs = eval.scalar(claim.rhs, b);
     claim_divisors.insert(claim_divisors.end(), eval.divisors().begin(), eval.divisors().end());
     if (not_local) {
       for (const auto& v : eval.locality_violations()) not_local->push_back(v);
@@ -221,7 +221,10 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
       if (!all_n && hi != 0 && !disproved) all_n = static_cast<int>(r.proved_n.size()) == hi - lo + 1;
     }
     if (disproved) {
-      r.counterexample = find_counterexample(engine, claim, clipped_search(o.search));
+      CounterexampleSearch search = clipped_search(o.search);
+      // A coefficient is not identically zero: rational points too, where integer ones miss it.
+      search.rational_attempts_per_n = std::max(search.rational_attempts_per_n, 60);
+      r.counterexample = find_counterexample(engine, claim, search);
       if (r.counterexample) {
         r.verdict = ProofVerdict::Disproved;
       } else {

@@ -200,6 +200,36 @@ const std::vector<Case>& corpus() {
                                          source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
        },
        2, "this is a mechanism scene (top-level `mechanism`)", "", ""},
+      // --- issue 24: claims (divisors as written, claims undefined everywhere, rational counterexamples)
+      {"ZeroOverZeroClaimIsBadInputNotProved",
+       [] {
+         const std::string z = "(norm2(r[n-2] + r[n-1]) - norm2(r[n-2]) - norm2(r[n-1]) - 2*dot(r[n-2], r[n-1]))";
+         return std::vector<std::string>{"prove", "--file", write_temp("zz.yaml", claim_file("omega_out*" + z + "/" + z)),
+                                         "--ladder-seconds", "0"};
+       },
+       2, "is identically zero", "", "proved"},
+      {"AlwaysUndefinedClaimIsBadInputNotExit3",
+       [] { return std::vector<std::string>{"prove", "--file", write_temp("undef.yaml", claim_file("omega_out + 1/dot(r[1], perp(r[1]))")), "--ladder-seconds", "0"}; },
+       2, "dot(r[1], perp(r[1])) (", "", ""},
+      {"ADivisorTimesZeroMakesTheClaimUndefinedWhereItVanishes",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("zerotimes.yaml", claim_file("omega_out + 0*(1/vx(r[n-1]))")), "--scene",
+                                         write_temp("x0.yaml", polygon_scene("x0", "[[0, 0], [1, 4], [5, 5], [3, 1], [3, -2]]"))};
+       },
+       0, "", "the divisor vx(r[n-1]) of the claim as written", ""},
+      {"AProofAtN200IsRefusedBeforeTheWork",
+       [] { return std::vector<std::string>{"prove", "--claim", "eq22", "--n", "200"}; },
+       2, "limited to n <= 20", "", ""},
+      {"ACheckClaimProofAtN200IsRefusedBeforeTheWork",
+       [] { return std::vector<std::string>{"check-claim", write_temp("n200.yaml", claim_file("omega_out")), "--n", "200"}; },
+       2, "limited to n <= 20", "", ""},
+      {"AWrongTermZeroAtEverySmallIntegerIsDisproved",
+       [] {
+         std::string f = "vx(K[n])";
+         for (int k = 1; k <= 7; ++k) f += "*(vx(K[n])^2 - " + std::to_string(k * k) + ")";
+         return std::vector<std::string>{"prove", "--file", write_temp("intzero.yaml", claim_file("omega_out + omega[1]*" + f)), "--ladder-seconds", "0"};
+       },
+       1, "", "disproved", ""},
   };
   return cases;
 }

@@ -34,15 +34,17 @@ TEST(CheckClaimCli, SideZeroIsBadInput) {
 
 // A term that always divides by zero: no evaluation can produce a comparison, so the result is
 // an error (exit 3), never holds_on_samples with not one evaluation done.
-TEST(CheckClaimCli, AlwaysUndefinedClaimIsAnErrorNotAPass) {
+TEST(CheckClaimCli, AlwaysUndefinedClaimIsBadInputNotAPass) {
+  // 1/(r_{n-1} x r_{n-1}): the divisor is identically zero, the claim undefined at every
+  // configuration. It was the verdict error with exit 3 (an internal error) before; it is the
+  // user's ill-formed claim: exit 2, naming the divisor.
   const CliRun r = run_cli({"check-claim", claim_file("c3.yaml", "1/cross(r[n-1], r[n-1])", "1"), "--json", "--n", "4..5",
                             "--count", "3"});
-  EXPECT_EQ(r.code, 3) << r.out << r.err;
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["claims"][0]["verdict"], "error") << r.out;
-  EXPECT_EQ(j["claims"][0]["samples_compared"], 0) << r.out;
-  EXPECT_EQ(j["summary"]["not_as_expected"], 1) << r.out;
-  EXPECT_EQ(j["exit_status"], 3) << r.out;
+  EXPECT_EQ(j["error"]["kind"], "input") << r.out;
+  EXPECT_NE(j["error"]["message"].get<std::string>().find("cross(r[n-1], r[n-1]) ("), std::string::npos) << r.out;
+  EXPECT_EQ(j["exit_status"], 2) << r.out;
 }
 
 // --scene: a user's claim that is not well formed is bad input, refused the same way in text

@@ -14,9 +14,12 @@
 
 #include <ginac/ginac.h>
 
+#include <algorithm>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "linkproof/claims/claim_expression.h"
@@ -57,6 +60,22 @@ class ClaimEvaluator {
     program_ = &p;
     noted_now_ = &noted;
     return std::move(scalar_of(p.root, b)).to_poly();
+  }
+
+  /// The value of one side of a claim: its expression, undefined wherever a divisor of the side
+  /// as written vanishes, also one GiNaC cancelled when it built the expression (Z*X/Z, 0/Z,
+  /// (1/Z)^0: claim_expression.h). Each divisor is evaluated for every binding of its indices
+  /// (every j of a sum_j, every pair of a sum_pairs) and recorded in divisors(). A divisor that
+  /// is zero makes the side undefined (in partial mode only the term of its sum's inputs); one
+  /// that is identically zero in symbolic coordinates is an ill-formed claim (InputError); in
+  /// floating point one that is not distinguishable from zero makes the side's error bound
+  /// unbounded, as the division would have.
+  RatePoly<T> scalar(const ClaimExpression& side, IndexBindings b = {}) {
+    std::optional<T> possibly_zero;
+    for (const WrittenDivisor& d : side.divisors()) written_divisor(d, b, possibly_zero);
+    RatePoly<T> v = scalar(side.expression(), b);
+    if (possibly_zero) v = v.right_scaled(*possibly_zero);
+    return v;
   }
 
   /// Where the expression is not local (see above); empty if it is.
@@ -226,6 +245,48 @@ class ClaimEvaluator {
     RatePoly<T> inverse = RatePoly<T>(from_int<T>(1)) / d;  // refuses rates, tests for zero
     divisors_.push_back(d.constant());
     return Scalar::poly(std::move(inverse));
+  }
+
+  /// Evaluates one written divisor at each binding of its indices (see scalar(ClaimExpression)).
+  /// `possibly_zero` receives d * (1/d) for a floating-point d not distinguishable from 0: about 1,
+  /// with an unbounded error bound.
+  void written_divisor(const WrittenDivisor& d, const IndexBindings& b, std::optional<T>& possibly_zero) {
+    const auto at = [&](const IndexBindings& bb, std::vector<int> inputs) {
+      try {
+        const RatePoly<T> v = scalar(d.expression, bb);
+        if (!v.is_constant()) throw error("division by an expression that contains rates: " + d.text);
+        T value = v.constant();
+        if (linkproof::is_zero(value)) {
+          if constexpr (std::is_same_v<T, GiNaC::ex>)
+            throw error("the divisor " + d.text + " (" + d.where +
+                        ") is identically zero: the claim is undefined at every configuration");
+          throw UndefinedQuantity("the divisor " + d.text + " of the claim as written", "it is zero at this configuration");
+        }
+        if constexpr (ScalarTraits<T>::has_error_bound) {
+          T one = value * (from_int<T>(1) / value);
+          if (ScalarTraits<T>::Traits::is_unbounded(one.e)) possibly_zero = std::move(one);
+        }
+        divisors_.push_back(std::move(value));
+      } catch (const UndefinedQuantity& u) {
+        if (!partial_ || inputs.empty()) throw;
+        std::sort(inputs.begin(), inputs.end());
+        undefined_inputs_.emplace(std::move(inputs), Undefined{u.quantity(), u.reason()});
+      }
+    };
+    const int m = c_.inputs();
+    switch (d.binding) {
+      case IndexBinding::None:
+      case IndexBinding::ForEachJ: at(b, {}); return;
+      case IndexBinding::SumJ:
+        for (int j = 1; j <= m; ++j) at({j, b.l}, {j});
+        return;
+      case IndexBinding::SumPairs:
+      case IndexBinding::SumPairsLt:
+        for (int j = 1; j <= m; ++j)
+          for (int l = d.binding == IndexBinding::SumPairs ? 1 : j + 1; l <= m; ++l)
+            if (l != j) at({j, l}, {j, l});
+        return;
+    }
   }
 
   /// The value of an index (a node's), checked against [1, n - 3] for an input and [1, n] for

@@ -45,6 +45,18 @@ struct IndexUse {
   std::string where;         ///< "FILE:LINE:COLUMN" of the word
 };
 
+/// One divisor of an expression as written: the operand after a '/', or the base of a negative
+/// power. GiNaC simplifies an expression as it builds it (Z*X/Z = X, 0/Z = 0, (1/Z)^0 = 1), so a
+/// divisor can be gone from expression() although the claim as written is undefined where it
+/// vanishes; the evaluator tests each of these separately (claim_evaluator.h). Numbers are left
+/// out (GiNaC refuses a division by the number 0 when it parses).
+struct WrittenDivisor {
+  std::string text;     ///< as written, e.g. "dot(r[j], perp(r[j]))"
+  GiNaC::ex expression;  ///< its own parse (its inner divisors are entries of their own)
+  IndexBinding binding = IndexBinding::None;  ///< which sum binds its j, l
+  std::string where;    ///< "FILE:LINE:COLUMN" of its first character
+};
+
 class ClaimExpression {
  public:
   /// Checks and parses `text`; throws InputError naming file:line:column, the field and the problem.
@@ -58,12 +70,15 @@ class ClaimExpression {
   const GiNaC::ex& expression() const { return expression_; }
   /// Every indexed word, for the range checks of claim_indices.h.
   const std::vector<IndexUse>& index_uses() const { return index_uses_; }
+  /// Every divisor as written, in the order of the text.
+  const std::vector<WrittenDivisor>& divisors() const { return divisors_; }
   const std::string& field() const { return field_; }
 
  private:
   std::string text_;
   GiNaC::ex expression_;
   std::vector<IndexUse> index_uses_;
+  std::vector<WrittenDivisor> divisors_;
   std::string field_;
 };
 

@@ -62,7 +62,7 @@ SideValue<T> evaluate_side(const DataClaim& claim, const ClaimExpression& side, 
   ClaimEvaluator<T> eval(c, claim.reading);
   eval.set_partial(true);
   SideValue<T> v;
-  v.poly = Defined<RatePoly<T>>::attempt([&] { return eval.scalar(side.expression(), b); });
+  v.poly = Defined<RatePoly<T>>::attempt([&] { return eval.scalar(side, b); });
   v.undefined_inputs = eval.undefined_inputs();
   // Leaving terms out is exact only for a local expression; otherwise the side is undefined.
   if (!v.undefined_inputs.empty() && !eval.locality_violations().empty()) {

@@ -27,6 +27,10 @@ struct Counterexample {
 struct CounterexampleSearch {
   int n_min = 4, n_max = 8;       ///< sides to search (clipped to the claim's range)
   int attempts_per_n = 60;        ///< random integer configurations per n before giving up on n
+  /// Then random rational ones (coordinates p/q, 2 <= q <= 12): a wrong term whose coefficient
+  /// vanishes at every small integer point (a factor x (x - 1) ... of a coordinate) is nonzero at
+  /// almost every rational one.
+  int rational_attempts_per_n = 0;
   std::uint64_t seed = 1;
   bool shrink = true;
 };

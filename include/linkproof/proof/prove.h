@@ -76,6 +76,11 @@ struct ProofResult {
   bool is_as_expected(bool strict = false) const;
 };
 
+/// The largest n of a proof at one n (`only_n`). Its cost grows about as n^3: eq. (22) takes
+/// about 5 s at n = 10, 20 s at n = 20 and 70 s at n = 28 on one busy core, so n = 200 would take
+/// hours. Larger n are covered by the proof for every n (the lift lemma, lift.h).
+constexpr int kMaxPerNProofSides = 20;
+
 struct ProveOptions {
   std::optional<int> only_n;           ///< prove for this n only (no proof for every n)
   int n_max = 0;                       ///< per-n ladder: up to this n (0: until the budget ends)
