@@ -7,5 +7,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
-nice -n 10 ninja -C "$BUILD" -j2 linkproof_bench
+# cmake --build, not ninja: build/ is a Makefile tree when scripts/build.sh made it.
+nice -n 10 cmake --build "$BUILD" -j2 --target linkproof_bench
 python3 bench/performance_table.py --bench "$BUILD/bench/linkproof_bench" --doc docs/performance.md "$@"

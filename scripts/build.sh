@@ -10,9 +10,15 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 bash scripts/install_deps.sh
 
 jobs="$(nproc)"
-configure=(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" "$@")
+configure=(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG")
+# In CI a warning fails the build (cmake/LinkproofWarnings.cmake); a build prints none.
+if [[ -n "${CI:-}" ]]; then configure+=(-DLINKPROOF_WERROR=ON); fi
+configure+=("$@")
 echo "==> build: ${configure[*]}"
 "${configure[@]}"
-echo "==> build: cmake --build build -j${jobs}"
-cmake --build build -j"${jobs}"
+# LINKPROOF_BUILD_TARGETS (space separated) builds only those targets (run_example.sh: linkproof).
+targets=()
+for t in ${LINKPROOF_BUILD_TARGETS:-}; do targets+=(--target "$t"); done
+echo "==> build: cmake --build build -j${jobs} ${targets[*]}"
+cmake --build build -j"${jobs}" "${targets[@]}"
 echo "==> build: done"

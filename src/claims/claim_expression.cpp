@@ -336,16 +336,16 @@ class Scanner {
     const bool is_index = open.text == "[";
     // Look ahead to the matching close to count commas at depth 0.
     {
-      int depth = 0;
+      int level = 0;
       size_t k = i;
       int args = 1;
       for (; tokens_[k].kind != Tok::End; ++k) {
-        if (tokens_[k].kind == Tok::Open) ++depth;
+        if (tokens_[k].kind == Tok::Open) ++level;
         if (tokens_[k].kind == Tok::Close) {
-          if (depth == 0) break;
-          --depth;
+          if (level == 0) break;
+          --level;
         }
-        if (tokens_[k].kind == Tok::Comma && depth == 0) ++args;
+        if (tokens_[k].kind == Tok::Comma && level == 0) ++args;
       }
       if (k == i) fail(open.offset, "empty " + std::string(is_index ? "index" : "argument list"));
       w = find_word(t.text, args);
@@ -363,12 +363,12 @@ class Scanner {
     if (!indexed && is_index) fail(open.offset, "'" + t.text + "' is called with ( ), not indexed with [ ]");
     if (indexed) {
       const size_t first = tokens_[i].offset;
-      size_t close = i, depth = 0;
+      size_t close = i, level = 0;
       for (; tokens_[close].kind != Tok::End; ++close) {
-        if (tokens_[close].kind == Tok::Open) ++depth;
+        if (tokens_[close].kind == Tok::Open) ++level;
         if (tokens_[close].kind == Tok::Close) {
-          if (depth == 0) break;
-          --depth;
+          if (level == 0) break;
+          --level;
         }
       }
       const bool input = w->kind == WordKind::InputScalar || w->kind == WordKind::InputVector;

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "linkproof/core/error.h"
 #include "linkproof/symbolic/canonical_form.h"
 
 namespace linkproof {
@@ -104,6 +105,8 @@ class TapeCompiler {
         break;
       }
       case CanonicalForm::Kind::Product: slot = product(n, std::nullopt); break;
+      case CanonicalForm::Kind::Atom:  // only claim expressions have atoms (CanonicalForm::with_atoms)
+        throw InternalError("Tape: an atom of a claim expression in a tape of the loop solution");
     }
     slots_.emplace(p, slot);
     return slot;

@@ -76,7 +76,7 @@ TEST(Soundness, ClaimFalseOnlyFromN6IsDisprovedNotProved) {
 
 // Finding 4: indices are checked when the claim file is read, for every n of the range.
 TEST(Soundness, OutOfRangeIndicesAreRefusedAtLoadNamingTheLineAndColumn) {
-  for (const std::string& lhs : {"omega[999]", "omega[0]", "omega[-1]", "side_omega[999]", "K[0]", "1000 + side_omega[0]",
+  for (const std::string lhs : {"omega[999]", "omega[0]", "omega[-1]", "side_omega[999]", "K[0]", "1000 + side_omega[0]",
                                  "omega[2]", "r[n+1]", "omega[n-2]"}) {
     SCOPED_TRACE(lhs);
     try {

@@ -361,7 +361,9 @@ TEST(TestingGenerators, APlantedFailureOnABiasedFamilyShrinksToExponent2AndSmall
       SCOPED_TRACE(c.family + " seed " + std::to_string(seed));
       EXPECT_EQ(c.family.rfind(r.name, 0), 0u);
       EXPECT_EQ(exponent_of(c.family), 2);
-      if (c.family.find("-j") != std::string::npos) EXPECT_EQ(j_of(c.family), 1);
+      if (c.family.find("-j") != std::string::npos) {
+        EXPECT_EQ(j_of(c.family), 1);
+      }
       EXPECT_TRUE(cln::zerop(c.scene.inputs[0].rate)) << c;
       EXPECT_TRUE(cln::zerop(c.scene.inputs[0].rate_dot)) << c;
       int large = 0;

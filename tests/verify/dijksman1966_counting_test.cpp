@@ -18,7 +18,9 @@ TEST(Dijksman1966Counting, TriangleRanksAreProvedAndGeometricRanksHoldOnSamples)
       EXPECT_EQ(c.verdict, k < 2 ? CountVerdict::Proved : CountVerdict::HoldsOnSamples) << c.id << ": " << c.reason;
       EXPECT_TRUE(c.as_expected()) << c.id;
       EXPECT_EQ(c.as_expected(/*strict=*/true), k < 2) << c.id;
-      if (k >= 2) EXPECT_EQ(c.samples, 2) << c.id;
+      if (k >= 2) {
+        EXPECT_EQ(c.samples, 2) << c.id;
+      }
     }
   }
 }

@@ -56,7 +56,7 @@ struct Comparison {
   double scale = 0;
   /// A term's comparison: its monomial. Its label is written only when the comparison is judged
   /// with its text: a sweep judges the verdicts of all m^2 terms and writes the text of one.
-  std::optional<Monomial> monomial;
+  std::optional<Monomial> monomial{};  // {}: a comparison of a statement is {label, lhs, rhs}
   /// "total", "j=1", "omega_dot[1]", "j=2: omega[1]*omega[2]", ...
   std::string full_label() const { return monomial ? label_head + monomial_label(*monomial) : label_head; }
 };

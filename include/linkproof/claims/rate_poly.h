@@ -50,9 +50,11 @@ class Monomial {
   Monomial(std::initializer_list<int> ids) {
     check_degree(static_cast<int>(ids.size()));
     std::array<int, kMaxDegree> sorted{};
-    std::copy(ids.begin(), ids.end(), sorted.begin());
-    std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(ids.size()));
-    for (size_t i = 0; i < ids.size(); ++i) set(static_cast<int>(i), sorted[i]);
+    // check_degree threw above kMaxDegree; the min says so to the compiler (-Warray-bounds).
+    const size_t k = std::min(ids.size(), sorted.size());
+    std::copy(ids.begin(), ids.begin() + k, sorted.begin());
+    std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k));
+    for (size_t i = 0; i < k; ++i) set(static_cast<int>(i), sorted[i]);
   }
 
   /// The number of variables (the degree).

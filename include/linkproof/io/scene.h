@@ -53,7 +53,7 @@ struct PolygonScene {
   std::string source;            ///< the file path, or the label given to parse_polygon_scene
   Polygon<Rational> polygon;     ///< K_1..K_n, exact; n >= 4, no coincident joints
   InputRates<Rational> rates;    ///< omega / omega_dot, 0-based (omega[0] = omega_{1,n}), n-3 each
-  std::optional<SceneAsk> ask;   ///< field `ask`: what to compute (nullopt: everything)
+  std::optional<SceneAsk> ask{}; ///< field `ask`: what to compute (nullopt: everything; {}: aggregates may leave it out)
 };
 
 /// Upper bound on n: far beyond any linkage, low enough that checking all pairs of joints for

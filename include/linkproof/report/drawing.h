@@ -24,7 +24,7 @@ struct Segment {
   std::string color = "#222222";
   Stroke stroke = Stroke::Solid;
   bool arrow = false;  ///< arrow head at b (vectors of velocity and acceleration polygons)
-  std::string label;   ///< drawn at the middle, may be empty
+  std::string label{};  ///< drawn at the middle, may be empty ({}: aggregates may leave it out)
 };
 
 struct Marker {
