@@ -9,7 +9,6 @@
 #include <fmt/ostream.h>
 
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <regex>
 
@@ -20,6 +19,7 @@
 #include "linkproof/io/claim_file.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/scene.h"
+#include "linkproof/report/atomic_file.h"
 #include "linkproof/report/mechanism_document.h"
 #include "linkproof/report/polygon_document.h"
 #include "linkproof/report/proof_document.h"
@@ -57,36 +57,34 @@ std::string command_line(const ReportArgs& a) {
   return c;
 }
 
-void write_file(const std::filesystem::path& path, const std::string& text, std::ostream& out) {
-  std::ofstream f(path, std::ios::binary);
-  if (!f) throw InputError(path.string(), "--out", "cannot write the file");
-  f << text;
-  if (!f) throw InputError(path.string(), "--out", "writing failed");
-  fmt::print(out, "wrote {}\n", path.string());
-}
-
+// Renders every asked format in memory, then writes all the files or none
+// (write_files_atomically): a failure leaves no half of a report behind. Every file name is a
+// file_stem (report/escape.h): inside `--out`, whatever the input's or the scene's name holds.
 void write_document(const ReportArgs& a, const report::Document& d, std::ostream& out, std::ostream& err) {
   namespace fs = std::filesystem;
   const fs::path dir(a.out);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError(a.out, "--out", "cannot create the directory: " + ec.message());
-  const std::string stem = fs::path(a.input).stem().string();
+  const std::string stem = report::file_stem(fs::path(a.input).stem().string());
   const bool all = a.format == "all";
+  std::vector<OutputFile> files;
   if (all || a.format == "html") {
     const auto katex = report::load_katex_assets(a.katex);
     if (!katex)
-      fmt::print(err, "linkproof: warning: KaTeX not found in {} (Debian package libjs-katex); the HTML shows TeX source\n",
+      fmt::print(err,
+                 "linkproof: warning: KaTeX not found in {} (Debian package libjs-katex); the HTML shows TeX source\n",
                  a.katex);
-    write_file(dir / (stem + ".html"), report::render_html(d, katex), out);
+    files.push_back({dir / (stem + ".html"), report::render_html(d, katex)});
   }
   if (all || a.format == "md") {
     std::map<std::string, std::string> figures;
-    const std::string md = report::render_markdown(d, figures);
-    write_file(dir / (stem + ".md"), md, out);
-    for (const auto& [name, svg] : figures) write_file(dir / name, svg, out);
+    files.push_back({dir / (stem + ".md"), report::render_markdown(d, figures)});
+    for (auto& [name, svg] : figures) files.push_back({dir / name, std::move(svg)});
   }
-  if (all || a.format == "tex") write_file(dir / (stem + ".tex"), report::render_latex(d), out);
+  if (all || a.format == "tex") files.push_back({dir / (stem + ".tex"), report::render_latex(d)});
+  write_files_atomically(files, "--out");
+  for (const auto& f : files) fmt::print(out, "wrote {}\n", f.path.string());
 }
 
 report::Reproduce reproduce_of(const ReportArgs& a, std::string seed) {

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
+#include "linkproof/report/escape.h"
 #include "svg_plot.h"
 
 namespace linkproof::report {
@@ -39,9 +41,12 @@ std::string svg_label(const std::string& label) {
 const char* dash_of(Stroke s) { return s == Stroke::Dashed ? " stroke-dasharray=\"6 4\"" : ""; }
 double width_of(Stroke s) { return s == Stroke::Solid ? 2.0 : 1.0; }
 
-// PDF colour operator arguments "r g b" from "#rrggbb".
+// PDF colour operator arguments "r g b" from "#rrggbb" (black for anything else: the text goes
+// into \pdfliteral, so nothing but these digits may).
 std::string pdf_rgb(const std::string& hex) {
-  if (hex.size() != 7 || hex[0] != '#') return "0 0 0";
+  if (hex.size() != 7 || hex[0] != '#' ||
+      !std::all_of(hex.begin() + 1, hex.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); }))
+    return "0 0 0";
   const auto channel = [&](size_t i) { return std::stoi(hex.substr(i, 2), nullptr, 16) / 255.0; };
   return fmt::format("{:.3f} {:.3f} {:.3f}", channel(1), channel(3), channel(5));
 }
@@ -90,11 +95,11 @@ View compute_view(const Drawing& d) {
 std::string label_tex(const std::string& label) {
   const auto [base, sub] = split_label(label);
   static const char* greek[] = {"alpha", "beta", "gamma", "omega", "phi", "lambda", "mu"};
-  std::string b = base;
+  std::string b = latex_math_escape(base);
   for (const char* g : greek)
     if (base == g) b = std::string("\\") + g;
   if (sub.empty()) return b;
-  return b + "_{" + sub + "}";
+  return b + "_{" + latex_math_escape(sub, true) + "}";
 }
 
 std::string render_svg(const Drawing& d, double width_px) {
@@ -116,32 +121,35 @@ std::string render_svg(const Drawing& d, double width_px) {
   for (const auto& p : d.patches) {
     s += "<polygon points=\"";
     for (const auto& q : p.points) s += fmt::format("{:.2f},{:.2f} ", X(q.x), Y(q.y));
-    s += fmt::format("\" fill=\"{}\" fill-opacity=\"0.35\" stroke=\"none\"/>\n", p.color);
+    s += fmt::format("\" fill=\"{}\" fill-opacity=\"0.35\" stroke=\"none\"/>\n", svg_escape(p.color));
   }
   for (const auto& g : d.segments) {
-    s += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{}\"{}{}/>\n",
-                     X(g.a.x), Y(g.a.y), X(g.b.x), Y(g.b.y), g.color, width_of(g.stroke), dash_of(g.stroke),
+    s += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" "
+                     "stroke-width=\"{}\"{}{}/>\n",
+                     X(g.a.x), Y(g.a.y), X(g.b.x), Y(g.b.y), svg_escape(g.color), width_of(g.stroke), dash_of(g.stroke),
                      g.arrow ? " marker-end=\"url(#arrow)\"" : "");
     if (!g.label.empty())
       s += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" fill=\"{}\">{}</text>\n", X((g.a.x + g.b.x) / 2) + 4,
-                       Y((g.a.y + g.b.y) / 2) - 4, g.color, svg_label(g.label));
+                       Y((g.a.y + g.b.y) / 2) - 4, svg_escape(g.color), svg_label(g.label));
   }
   for (const auto& m : d.angles) {
     const auto pts = arc_points(m, 22 / scale);
-    s += "<polyline fill=\"none\" stroke=\"" + m.color + "\" stroke-width=\"1.5\" points=\"";
+    s += "<polyline fill=\"none\" stroke=\"" + svg_escape(m.color) + "\" stroke-width=\"1.5\" points=\"";
     for (const auto& q : pts) s += fmt::format("{:.2f},{:.2f} ", X(q.x), Y(q.y));
     s += "\"/>\n";
     const Point2 mid = pts[pts.size() / 2];
-    s += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" fill=\"{}\">{}</text>\n", X(mid.x) + 3, Y(mid.y) - 3, m.color,
+    s += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" fill=\"{}\">{}</text>\n", X(mid.x) + 3, Y(mid.y) - 3,
+                     svg_escape(m.color),
                      svg_label(m.label));
   }
   for (const auto& m : d.markers) {
     if (!std::isfinite(m.at.x) || !std::isfinite(m.at.y)) continue;
     s += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"1.5\"/>\n",
-                     X(m.at.x), Y(m.at.y), m.hollow ? 4.5 : 3, m.hollow ? "white" : m.color, m.color);
+                     X(m.at.x), Y(m.at.y), m.hollow ? 4.5 : 3, m.hollow ? "white" : svg_escape(m.color),
+                     svg_escape(m.color));
     if (!m.label.empty())
       s += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" fill=\"{}\">{}</text>\n", X(m.at.x) + 6, Y(m.at.y) - 6,
-                       m.color, svg_label(m.label));
+                       svg_escape(m.color), svg_label(m.label));
   }
   s += "</svg>\n";
   return s;

@@ -63,8 +63,10 @@ Section summary_section(const PolygonScene& scene, const PolygonCheck& check) {
     if (!check.ask->rates.empty()) {
       Table t{{plain("asked"), plain("value")}, {}};
       for (const AskedRate& r : check.ask->rates) {
-        const auto& v = (r.dot ? check.omega_dot : check.omega)[static_cast<size_t>(std::stoi(r.subject.name) - 1)];
-        t.rows.push_back({tex(std::string(r.dot ? "\\dot\\omega_{" : "\\omega_{") + r.subject.name + "," +
+        // The side as a number (the reader checked it is one): no text of the scene goes into math.
+        const int side = std::stoi(r.subject.name);
+        const auto& v = (r.dot ? check.omega_dot : check.omega)[static_cast<size_t>(side - 1)];
+        t.rows.push_back({tex(std::string(r.dot ? "\\dot\\omega_{" : "\\omega_{") + std::to_string(side) + "," +
                               std::to_string(check.n) + "}"),
                           plain(v ? *v : "undefined")});
       }

@@ -5,11 +5,8 @@
 #include <sstream>
 
 #include "linkproof/report/render.h"
-#include "svg_plot.h"
 
 namespace linkproof::report {
-
-std::string html_escape(const std::string& s) { return svg_escape(s); }
 
 namespace {
 
@@ -74,7 +71,7 @@ void block_html(const Block& b, std::string& out) {
       break;
     case Block::Kind::Figure: {
       const View v = compute_view(b.figure.drawing);
-      out += "<figure id=\"fig-" + html_escape(b.figure.id) + "\">\n" + render_svg(b.figure.drawing) +
+      out += "<figure id=\"fig-" + anchor_id(b.figure.id) + "\">\n" + render_svg(b.figure.drawing) +
              "<figcaption>" + html_escape(b.figure.caption);
       if (!v.off_view.empty()) {
         out += " Outside the view:";
@@ -87,7 +84,7 @@ void block_html(const Block& b, std::string& out) {
 }
 
 void section_html(const Section& s, int level, std::string& out) {
-  out += fmt::format("<section id=\"{}\">\n<h{}>{}</h{}>\n", html_escape(s.id), level, html_escape(s.title), level);
+  out += fmt::format("<section id=\"{}\">\n<h{}>{}</h{}>\n", anchor_id(s.id), level, html_escape(s.title), level);
   for (const auto& b : s.blocks) block_html(b, out);
   for (const auto& sub : s.subsections) section_html(sub, level + 1, out);
   out += "</section>\n";
@@ -155,7 +152,7 @@ std::string render_html(const Document& d, const std::optional<KatexAssets>& kat
            "source.</p>\n";
   out += "<nav><ul>\n";
   for (const auto& s : d.sections)
-    out += "<li><a href=\"#" + html_escape(s.id) + "\">" + html_escape(s.title) + "</a></li>\n";
+    out += "<li><a href=\"#" + anchor_id(s.id) + "\">" + html_escape(s.title) + "</a></li>\n";
   out += "</ul></nav>\n";
   for (const auto& s : d.sections) section_html(s, 2, out);
   if (katex) {

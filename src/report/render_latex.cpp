@@ -2,61 +2,20 @@
 
 namespace linkproof::report {
 
-std::string latex_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '\\': out += "\\textbackslash{}"; break;
-      case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += '\\'; out += c; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '<': out += "$<$"; break;
-      case '>': out += "$>$"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 namespace {
-
-// Plain text may hold Unicode (omega-dot, Greek letters in titles): pdflatex with inputenc
-// reads UTF-8 but has no glyphs for most of it, so the few characters reports use are mapped.
-std::string latex_text(const std::string& s) {
-  std::string e = latex_escape(s), out;
-  static const std::pair<const char*, const char*> map[] = {
-      {"ω̇", "$\\dot\\omega$"}, {"ω", "$\\omega$"}, {"β", "$\\beta$"}, {"λ", "$\\lambda$"}, {"φ", "$\\varphi$"},
-      {"μ", "$\\mu$"},        {"Σ", "$\\Sigma$"}, {"≠", "$\\neq$"},  {"≤", "$\\le$"},     {"≥", "$\\ge$"},
-      {"×", "$\\times$"},     {"·", "$\\cdot$"},  {"→", "$\\to$"},   {"−", "-"},          {"–", "--"},
-      {"—", "---"},           {"′", "'"},         {"²", "$^2$"},     {"…", "\\dots{}"},   {"ε", "$\\varepsilon$"},
-      {"≈", "$\\approx$"},    {"∞", "$\\infty$"}, {"α", "$\\alpha$"}, {"γ", "$\\gamma$"}};
-  for (size_t i = 0; i < e.size();) {
-    bool hit = false;
-    for (const auto& [from, to] : map) {
-      const std::string f = from;
-      if (e.compare(i, f.size(), f) == 0) {
-        out += to, i += f.size(), hit = true;
-        break;
-      }
-    }
-    if (!hit) {
-      const unsigned char c = static_cast<unsigned char>(e[i]);
-      if (c < 0x80)
-        out += e[i++];
-      else {  // any other non-ASCII character: dropped to '?', never an error
-        out += '?';
-        ++i;
-        while (i < e.size() && (static_cast<unsigned char>(e[i]) & 0xC0) == 0x80) ++i;
-      }
-    }
-  }
-  return out;
-}
 
 std::string rich_tex(const Rich& r) {
   std::string out;
-  for (const auto& s : r) out += s.math ? "$" + s.text + "$" : latex_text(s.text);
+  for (const auto& s : r) out += s.math ? "$" + s.text + "$" : latex_escape(s.text);
   return out;
+}
+
+// After \\ (a table row's end) and \item, LaTeX looks for an optional [..] or *: a cell or
+// item whose text starts with one is shielded by {} so that the text is shown, not read.
+std::string shielded(std::string tex) {
+  const auto first = tex.find_first_not_of(" \n");
+  if (first != std::string::npos && (tex[first] == '[' || tex[first] == '*')) tex.insert(0, "{}");
+  return tex;
 }
 
 void block_tex(const Block& b, std::string& out) {
@@ -69,24 +28,10 @@ void block_tex(const Block& b, std::string& out) {
       else
         out += "\\[ " + b.display + " \\]\n\n";
       break;
-    case Block::Kind::Code: {
-      out += "\\begin{verbatim}\n";
-      // verbatim lines are not broken: long ones are folded at 90 characters.
-      std::string line;
-      for (char c : b.code + "\n") {
-        if (c == '\n' || line.size() >= 90) {
-          out += line + "\n";
-          line.clear();
-          if (c == '\n') continue;
-        }
-        line += c;
-      }
-      out += "\\end{verbatim}\n\n";
-      break;
-    }
+    case Block::Kind::Code: out += latex_verbatim(b.code) + "\n"; break;
     case Block::Kind::List:
       out += "\\begin{itemize}\n";
-      for (const auto& i : b.items) out += "\\item " + rich_tex(i) + "\n";
+      for (const auto& i : b.items) out += "\\item " + shielded(rich_tex(i)) + "\n";
       out += "\\end{itemize}\n\n";
       break;
     case Block::Kind::Table: {
@@ -98,7 +43,10 @@ void block_tex(const Block& b, std::string& out) {
       for (size_t k = 0; k < cols; ++k) out += (k ? " & " : "") + ("\\textbf{" + rich_tex(b.table.header[k]) + "}");
       out += " \\\\\n\\hline\n\\endhead\n";
       for (const auto& row : b.table.rows) {
-        for (size_t k = 0; k < cols; ++k) out += (k ? " & " : "") + (k < row.size() ? rich_tex(row[k]) : std::string());
+        for (size_t k = 0; k < cols; ++k) {
+          const std::string cell = k < row.size() ? rich_tex(row[k]) : std::string();
+          out += (k ? " & " + cell : shielded(cell));
+        }
         out += " \\\\\n";
       }
       out += "\\hline\n\\end{longtable}}\n\n";
@@ -106,11 +54,11 @@ void block_tex(const Block& b, std::string& out) {
     }
     case Block::Kind::Figure: {
       out += "\\begin{figure}[htbp]\\centering\n" + render_latex_picture(b.figure.drawing) + "\\caption{" +
-             latex_text(b.figure.caption);
+             latex_escape(b.figure.caption);
       const View v = compute_view(b.figure.drawing);
       if (!v.off_view.empty()) {
         out += " Outside the view:";
-        for (const auto& o : v.off_view) out += " " + latex_text(o) + ";";
+        for (const auto& o : v.off_view) out += " " + latex_escape(o) + ";";
       }
       out += "}\n\\end{figure}\n\n";
       break;
@@ -120,7 +68,8 @@ void block_tex(const Block& b, std::string& out) {
 
 void section_tex(const Section& s, int level, std::string& out) {
   static const char* commands[] = {"section", "subsection", "subsubsection", "paragraph"};
-  out += std::string("\\") + commands[std::min(level, 3)] + "{" + latex_text(s.title) + "}\\label{" + s.id + "}\n\n";
+  out += std::string("\\") + commands[std::min(level, 3)] + "{" + latex_escape(s.title) + "}\\label{" +
+         anchor_id(s.id) + "}\n\n";
   for (const auto& b : s.blocks) block_tex(b, out);
   for (const auto& sub : s.subsections) section_tex(sub, level + 1, out);
 }
@@ -136,7 +85,7 @@ std::string render_latex(const Document& d) {
       "\\setlength{\\textheight}{24cm}\\setlength{\\topmargin}{-1.5cm}\n"
       "\\setlength{\\parindent}{0pt}\\setlength{\\parskip}{0.5ex}\n"
       "\\sloppy\n"
-      "\\title{" + latex_text(d.title) + "}\n\\author{" + latex_text(d.subtitle) + "}\n\\date{}\n"
+      "\\title{" + latex_escape(d.title) + "}\n\\author{" + latex_escape(d.subtitle) + "}\n\\date{}\n"
       "\\begin{document}\n\\maketitle\n\n";
   for (const auto& s : d.sections) section_tex(s, 0, out);
   out += "\\end{document}\n";

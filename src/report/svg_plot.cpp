@@ -6,21 +6,11 @@
 #include <cmath>
 #include <limits>
 
+#include "linkproof/report/escape.h"
+
 namespace linkproof {
 
-std::string svg_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string svg_escape(const std::string& s) { return report::html_escape(s); }
 
 std::string palette_color(size_t index) {
   static const char* colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
@@ -112,16 +102,18 @@ std::string SvgPlot::render() const {
         pen_down = true;
       }
       if (!path.empty())
-        o += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.8\"{}/>\n", path, s.color, dash);
+        o += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.8\"{}/>\n", path,
+                         svg_escape(s.color), dash);
     }
     if (s.markers)
       for (auto [x, y] : s.points)
         if (std::isfinite(x) && std::isfinite(y))
-          o += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.5\" fill=\"{}\"/>\n", X(x), Y(y), s.color);
+          o += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3.5\" fill=\"{}\"/>\n", X(x), Y(y),
+                           svg_escape(s.color));
     // Legend entry.
     const double ly = top + 14 + 18 * static_cast<double>(k);
     o += fmt::format("<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>\n",
-                     left + pw + 12, ly, left + pw + 36, s.color, dash);
+                     left + pw + 12, ly, left + pw + 36, svg_escape(s.color), dash);
     o += fmt::format("<text x=\"{}\" y=\"{:.1f}\">{}</text>\n", left + pw + 42, ly + 4, svg_escape(s.name));
   }
   for (const SvgLabel& l : labels)

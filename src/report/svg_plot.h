@@ -34,7 +34,7 @@ struct SvgPlot {
   std::string render() const;
 };
 
-/// Escapes &, <, >, " for SVG text and attributes.
+/// SVG text and attributes: report::html_escape (report/escape.h), the one markup escaper.
 std::string svg_escape(const std::string& s);
 
 /// A distinct colour per index (a fixed categorical palette).

@@ -71,5 +71,52 @@ TEST(ReportDrawing, LabelTexMapsGreekNamesAndSubscripts) {
   EXPECT_EQ(label_tex("P"), "P");
 }
 
+// A link or joint name is a user string: in the LaTeX picture it is math, and no character of
+// it may end the math, open a group or start a command (also through TeX's ^^5c notation).
+TEST(ReportDrawing, LabelTexOfHostileNamesHasNoCommandOfTheName) {
+  for (const std::string name : {"}$\\input{/etc/passwd}$", "O^^5cinput{/etc/passwd}", "A_}$\\input{x}", "x%y#z&w~v",
+                                 "A_B_C", "a^b^c", "P\\section{Injected}"}) {
+    const std::string tex = label_tex(name);
+    EXPECT_EQ(tex.find("\\input"), std::string::npos) << tex;
+    EXPECT_EQ(tex.find("\\section"), std::string::npos) << tex;
+    EXPECT_EQ(tex.find("^^"), std::string::npos) << tex;
+    long depth = 0, dollars = 0;
+    for (size_t i = 0; i < tex.size(); ++i) {
+      if (tex[i] == '\\') {
+        ++i;
+        continue;
+      }
+      depth += tex[i] == '{' ? 1 : tex[i] == '}' ? -1 : 0;
+      EXPECT_GE(depth, 0) << tex;
+      dollars += tex[i] == '$';
+      EXPECT_TRUE(tex[i] != '%' && tex[i] != '#' && tex[i] != '&') << tex;  // a comment, a parameter, a tab
+    }
+    EXPECT_EQ(depth, 0) << tex;
+    EXPECT_EQ(dollars, 0) << tex;
+  }
+  EXPECT_EQ(label_tex("A_B_C"), "A_{B\\_C}");  // one subscript: a second _ is shown, not a double subscript
+  EXPECT_EQ(label_tex("A_BA^t"), "A_{BA^t}");   // the program's own superscript stays
+}
+
+TEST(ReportDrawing, SvgOfHostileLabelsAndColoursHasNoInjectedElement) {
+  Drawing d;
+  d.segments.push_back(
+      Segment{{0, 0}, {1, 1}, "\"/><script>alert(1)</script><x a=\"", Stroke::Solid, false, "<script>"});
+  d.markers.push_back({{0, 0}, "<img src=x>_<b>", "#222222", true, false});
+  const std::string svg = render_svg(d);
+  EXPECT_EQ(svg.find("<script"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("<img"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("<b>"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("<x "), std::string::npos) << svg;
+}
+
+TEST(ReportDrawing, LatexPictureOfAColourThatIsNotHexIsDrawnBlack) {
+  Drawing d;
+  d.segments.push_back(Segment{{0, 0}, {1, 1}, "#zzzzzz", Stroke::Solid, false, ""});
+  std::string tex;
+  EXPECT_NO_THROW(tex = render_latex_picture(d));  // std::stoi threw std::invalid_argument
+  EXPECT_NE(tex.find("0 0 0 RG"), std::string::npos) << tex;
+}
+
 }  // namespace
 }  // namespace linkproof::report

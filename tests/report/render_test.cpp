@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "linkproof/report/render.h"
+#include "report/report_checks.h"
 
 namespace linkproof::report {
 namespace {
@@ -83,6 +84,69 @@ TEST(ReportRender, LatexEscapesTextAndKeepsMath) {
   EXPECT_NE(tex.find("\\begin{longtable}"), std::string::npos);
   EXPECT_NE(tex.find("\\label{reproduce}"), std::string::npos);
   EXPECT_NE(tex.find("\\end{document}"), std::string::npos);
+}
+
+// --- hostile plain strings: every renderer escapes them for its language
+
+// A document whose every plain string came from a hostile scene.
+Document hostile_document() {
+  Document d;
+  d.title = "x}$\\input{/etc/passwd}\n# Injected title <script>alert(1)</script>";
+  d.subtitle = "```\n<b>";
+  Section s{"summary\"><script>alert(2)</script>", "a\n\nb ## ``` <i>", {}, {}};
+  s.blocks.push_back(paragraph(plain("    [x]: javascript:alert(3)\n\n# Injected")));
+  s.blocks.push_back(table_block({{plain("a|b"), plain("c")}, {{plain("[2pt] x"), plain("y\n| z")}, {plain("*"), plain("w")}}}));
+  s.blocks.push_back(list_block({plain("[label] item"), plain("1. x")}));
+  s.blocks.push_back(code_block("```\n\\end{verbatim}\n\\input{/etc/passwd}\n<script>alert(4)</script>\n````"));
+  d.sections.push_back(s);
+  return d;
+}
+
+TEST(ReportRender, LatexListingCannotBeClosedFromInside) {
+  const std::string tex = render_latex(hostile_document());
+  EXPECT_EQ(test::count(tex, "\\begin{verbatim}"), 1u);
+  EXPECT_EQ(test::count(tex, "\\end{verbatim}"), 1u) << tex;
+  EXPECT_EQ(test::latex_outside_verbatim(tex).find("\\input"), std::string::npos) << tex;
+}
+
+TEST(ReportRender, LatexPlainTextHasNoCommandNoBlankLineAndBalancedBraces) {
+  const std::string tex = test::latex_outside_verbatim(render_latex(hostile_document()));
+  EXPECT_EQ(test::latex_brace_depth_problem(tex), "") << tex;
+  EXPECT_EQ(tex.find("\\input"), std::string::npos) << tex;
+  // After \\ and \item LaTeX reads an optional [..]: a cell or item that starts with one is shielded.
+  EXPECT_NE(tex.find("\\endhead\n{}[2pt] x"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("\\\\\n{}* & w"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("\\item {}[label] item"), std::string::npos) << tex;
+}
+
+TEST(ReportRender, MarkdownKeepsItsHeadingsFencesAndTablesWhateverTheText) {
+  std::map<std::string, std::string> files;
+  const std::string md = render_markdown(hostile_document(), files);
+  const test::MarkdownOutline o = test::markdown_outline(md);
+  EXPECT_EQ(o.fences, 1u) << md;
+  EXPECT_FALSE(o.unclosed_fence) << md;
+  ASSERT_EQ(o.headings.size(), 2u) << md;  // the title and the one section
+  EXPECT_EQ(o.headings[1].rfind("## a  b \\#\\# \\`\\`\\` \\<i>", 0), 0u) << o.headings[1];
+  EXPECT_EQ(o.raw_html_other_than_anchors, "") << md;
+  EXPECT_EQ(o.bad_table_rows, std::vector<std::string>{}) << md;
+  EXPECT_NE(md.find("\n\\[x]: javascript"), std::string::npos) << "a link definition at a paragraph's start" << md;
+  EXPECT_NE(md.find("- 1\\. x"), std::string::npos) << md;
+}
+
+TEST(ReportRender, HtmlOfHostileStringsHasOnlyTheRenderersElements) {
+  const std::string html = render_html(hostile_document(), std::nullopt);
+  EXPECT_EQ(html.find("<script"), std::string::npos) << html;
+  EXPECT_EQ(html.find("<b>"), std::string::npos);
+  EXPECT_EQ(html.find("<i>"), std::string::npos);
+  EXPECT_NE(html.find("<section id=\"summary-22-3e-3cscript-3ealert-282-29"), std::string::npos)
+      << "an attribute was closed from inside";
+}
+
+TEST(ReportRender, HtmlEscapeReplacesWhatXmlForbids) {
+  const std::string fffd = "\xEF\xBF\xBD";
+  EXPECT_EQ(html_escape(std::string("a\x01") + "b\x7f" + "\xff" + "<\"&>\tc\n"),
+            "a" + fffd + "b" + fffd + fffd + "&lt;&quot;&amp;&gt;\tc\n");
+  EXPECT_EQ(html_escape("ω̇ K'_1"), "ω̇ K'_1");  // valid UTF-8 is kept
 }
 
 }  // namespace

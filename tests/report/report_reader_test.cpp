@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 
+#include "report/report_checks.h"
 #include "support/cli_run.h"
 #include "support/temp_dir.h"
 
@@ -113,6 +114,44 @@ TEST(ReportReader, LatexReportsCompileWithPdflatexSlow) {
     ASSERT_TRUE(fs::exists(dir.path / (std::string(stem) + ".pdf"))) << stem;
     EXPECT_GT(fs::file_size(dir.path / (std::string(stem) + ".pdf")), 10000u);
   }
+}
+
+// A scene whose names and description hold \input{/etc/passwd}, \end{verbatim}, }$, ^^5c,
+// HTML and Markdown: pdflatex compiles the report and reads no file of the input.
+TEST(ReportReader, HostileSceneLatexCompilesAndReadsNoFileSlow) {
+  if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed (scripts/install_deps.sh installs it)";
+  TempDir dir("tex_hostile");
+  std::ofstream(dir.path / "hostile.yaml") << test::hostile_fourbar_scene();
+  ASSERT_EQ(run_cli({"report", (dir.path / "hostile.yaml").string(), "--plans", "--format", "tex", "--out",
+                     dir.path.string()})
+                .code,
+            0);
+  int status = 0;
+  const std::string log =
+      capture("cd " + dir.path.string() + " && pdflatex -interaction=nonstopmode -halt-on-error hostile.tex 2>&1", status);
+  EXPECT_EQ(status, 0) << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
+  EXPECT_TRUE(fs::exists(dir.path / "hostile.pdf"));
+  EXPECT_EQ(log.find("(/etc/passwd"), std::string::npos) << "pdflatex opened a file named in the scene";
+}
+
+// The same scene's HTML as Chromium builds it: no element the scene wrote (KaTeX is left out,
+// so the page has no script at all).
+TEST(ReportReader, HostileSceneHtmlHasNoInjectedElementInChromiumSlow) {
+  if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
+  TempDir dir("html_hostile");
+  std::ofstream(dir.path / "hostile.yaml") << test::hostile_fourbar_scene();
+  ASSERT_EQ(run_cli({"report", (dir.path / "hostile.yaml").string(), "--plans", "--katex",
+                     (dir.path / "no_katex").string(), "--out", dir.path.string()})
+                .code,
+            0);
+  int status = 0;
+  const std::string dom = capture(chromium("--dump-dom file://" + (dir.path / "hostile.html").string()), status);
+  ASSERT_EQ(status, 0) << "chromium failed";
+  ASSERT_NE(dom.find("alert(1)"), std::string::npos) << "the scene's name is not shown";
+  EXPECT_EQ(dom.find("<script"), std::string::npos);
+  EXPECT_EQ(dom.find("<img"), std::string::npos);
+  EXPECT_EQ(dom.find("<b>"), std::string::npos);
+  EXPECT_EQ(count(dom, "<section id="), count(slurp(dir.path / "hostile.html"), "<section id="));
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 // Markdown with $...$ math and SVG files beside it, and LaTeX that pdflatex compiles.
 //
 // Text is a list of spans, each plain text or inline TeX math; renderers escape plain text for
-// their format and pass math through (KaTeX and LaTeX read the same TeX). Figures are drawings
+// their format (report/escape.h) and pass math through (KaTeX and LaTeX read the same TeX). A
+// user's string (a name, a description, a claim's text) goes into plain text, never into math. Figures are drawings
 // (report/drawing.h) in world coordinates, rendered to SVG or to a LaTeX picture.
 //
 // Section ids are stable (the browser test and readers' links rely on them):
@@ -43,7 +44,8 @@ struct Table {
 };
 
 struct Figure {
-  std::string id;       ///< file stem for renderers that write figures beside the report
+  std::string id;       ///< any text (it starts with the scene's name): renderers make it an anchor
+                        ///< and a file stem (report/escape.h) for figures written beside the report
   std::string caption;
   Drawing drawing;
 };

@@ -74,7 +74,11 @@ std::string render_svg(const Drawing& d, double width_px = 640);
 /// the larger side of the view is `width_cm`.
 std::string render_latex_picture(const Drawing& d, double width_cm = 12);
 
-/// "K'_1" -> TeX "K'_{1}", "beta_2" -> "\beta_{2}": labels of markers as TeX math.
+/// "K'_1" -> TeX "K'_{1}", "beta_2" -> "\beta_{2}": labels of markers as TeX math. The label
+/// splits at its first '_' into base and subscript; both are escaped by latex_math_escape
+/// (report/escape.h), so a link or joint name shows as written and can start no command, end
+/// no math and open no group ("A_B_C" -> "A_{B\_C}"); only the program's own one-letter
+/// superscript at the end ("A_BA^t") stays one.
 std::string label_tex(const std::string& label);
 
 }  // namespace linkproof::report

@@ -10,6 +10,8 @@
 //             SVG files beside the .md, referenced by relative path.
 //   LaTeX     an article that pdflatex compiles with texlive-latex-base alone (amsmath,
 //             longtable, graphicx); figures are picture environments drawn by \pdfliteral.
+// Every plain string is escaped for its format by report/escape.h (user strings included:
+// names, descriptions, claim texts, paths); section and figure ids become anchors by anchor_id.
 #pragma once
 
 #include <map>
@@ -17,6 +19,7 @@
 #include <string>
 
 #include "linkproof/report/document.h"
+#include "linkproof/report/escape.h"
 
 namespace linkproof::report {
 
@@ -34,14 +37,11 @@ std::optional<KatexAssets> load_katex_assets(const std::string& dir = "/usr/shar
 std::string render_html(const Document& d, const std::optional<KatexAssets>& katex);
 
 /// The Markdown text; `figure_files` receives file name -> SVG text for every figure, to be
-/// written beside the .md (names are "<figure id>.svg").
+/// written beside the .md. Names are file_stem(figure id) + ".svg" (report/escape.h), with
+/// "-2", "-3", ... before ".svg" when two ids give the same stem: a plain file name, never a
+/// path, whatever the id holds.
 std::string render_markdown(const Document& d, std::map<std::string, std::string>& figure_files);
 
 std::string render_latex(const Document& d);
-
-/// Escapes &, <, >, " for HTML text and attributes.
-std::string html_escape(const std::string& s);
-/// Escapes LaTeX's special characters in plain text.
-std::string latex_escape(const std::string& s);
 
 }  // namespace linkproof::report
