@@ -32,6 +32,7 @@ struct CheckArgs {
 int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostream& out) {
   const MechanismScene scene = parse_mechanism_scene(text, a.scene);
   MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), chosen_arithmetic(a.arith, scene.ask));
+  check.strict = a.strict;
   // With an ask, only what it names (the second-order work is the `curvature` command's then).
   if ((scene.curvature.empty() && scene.joint_joining.empty()) || check.ask)
     return print_report(out, check, a.json, exit_status(check));
@@ -86,7 +87,7 @@ void add_check_command(CLI::App& app, Action& action) {
   c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
   c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
   c->add_flag("--strict", a.strict,
-              "undefined or inconclusive on a true claim is not as expected (exit 1): for CI (polygon scenes)");
+              "undefined or inconclusive on a true claim is not as expected (exit 1): for CI");
 }
 
 }  // namespace linkproof::cli

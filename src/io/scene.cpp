@@ -199,6 +199,14 @@ class SceneReader {
         fail(r.subject.field, fmt::format("{}: expected a side 1..{} of this polygon (relative to side {}), got {}",
                                           r.text(), n, n, backticked(shorten(s, kMaxQuoted))));
     }
+    // A side is a number: `omega_dot(04)` is `omega_dot(4)`, written as such, and asked once.
+    for (std::size_t i = 0; i < ask.rates.size(); ++i) {
+      AskedRate& r = ask.rates[i];
+      r.subject.name = std::to_string(std::stoi(r.subject.name));
+      for (std::size_t k = 0; k < i; ++k)
+        if (ask.rates[k].dot == r.dot && ask.rates[k].subject.name == r.subject.name)
+          fail(r.subject.field, backticked(r.text()) + " is asked twice");
+    }
     const auto refuse = [&](const std::vector<AskedName>& names, const char* key) {
       if (!names.empty())
         fail(names.front().field, fmt::format("`{}` belongs to mechanism scenes; a polygon scene asks for omega(j), "

@@ -39,6 +39,8 @@ AskedRate read_rate(const std::string& text, const std::string& source, const st
 std::vector<AskedName> read_names(const YAML::Node& node, const std::string& source, const std::string& field,
                                   const char* what) {
   if (!node.IsSequence()) fail(source, field, fmt::format("expected a list of {}, got {}", what, kind_of(node)));
+  // An empty list asks for nothing: a slip, not a request (leave the item out instead).
+  if (node.size() == 0) fail(source, field, fmt::format("the list of {} is empty; leave the item out", what));
   std::vector<AskedName> out;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string f = fmt::format("{}[{}]", field, i);

@@ -157,6 +157,8 @@ Rational read_exact_number(const YAML::Node& node, const std::string& source, co
   const auto fail = [&](const std::string& problem) { throw InputError(source, field, shorten(problem, kMaxProblem)); };
   const std::string expected = "expected an exact number for " + what +
                                " (an integer, a fraction \"p/q\" or a decimal), got ";
+  // A missing key of a const map is an invalid node, on which IsScalar() itself throws.
+  if (!node.IsDefined()) fail("missing required field: an exact number for " + what);
   if (!node.IsScalar()) fail(expected + kind_of(node));
   const std::string& s = node.Scalar();  // the text as written: never read through a double
   const bool plain = node.Tag() == "?";

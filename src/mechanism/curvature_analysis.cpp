@@ -58,13 +58,34 @@ bool same_rates(const Linkage& g, const std::vector<Rational>& a, const std::vec
 
 const PlanePoint<Rational>& CurvatureAnalysis::pole(int i, int k) const {
   if (i > k) std::swap(i, k);
+  // `poles` holds every pair i < k in link order (analyse_curvature), so the pair's place is
+  // known: a scan per lookup made the Aronhold-Kennedy claim over all triples O(L^5) (a 100-loop
+  // chain took 70 s). Another order (built by hand) falls back to the scan.
+  const auto m = static_cast<long long>(poles.size());
+  long long links = 1;
+  while (links * (links - 1) / 2 < m) ++links;
+  if (links * (links - 1) / 2 == m && i >= 0 && k < links) {
+    const long long at = static_cast<long long>(i) * (2 * links - i - 1) / 2 + (k - i - 1);
+    const PoleEntry& e = poles[static_cast<size_t>(at)];
+    if (e.i == i && e.k == k) return e.pole;
+  }
   for (const auto& p : poles)
     if (p.i == i && p.k == k) return p.pole;
   throw InternalError(fmt::format("no pole of links {} and {}", i, k));
 }
 
+// The analysis constructs every pole (L(L-1)/2 exact points) and its claims visit every triple
+// of links (L^3/6): 202 links take about 3.5 s, 402 links over 8 GiB. Larger mechanisms are
+// refused before the work (docs/limits.md).
+constexpr int kMaxCurvatureLinks = 200;
+
 CurvatureAnalysis analyse_curvature(const MechanismScene& s, const MechanismSolution<Rational>& truth) {
   const Linkage& g = s.linkage;
+  if (g.link_count() > kMaxCurvatureLinks)
+    throw InputError(s.source, "mechanism.links",
+                     fmt::format("the curvature analysis (every pole, every triple of links) accepts at most {} links "
+                                 "(docs/limits.md), this mechanism has {}",
+                                 kMaxCurvatureLinks, g.link_count()));
   CurvatureAnalysis a;
   const auto fields = link_fields(g, truth.motion);
   for (int i = 0; i < g.link_count(); ++i)

@@ -21,6 +21,9 @@ std::string bar_problem(const Linkage& g, int t, int bar) {
   }
   if (on_t != 1)
     return fmt::format("bar `{}` must have exactly one joint on link `{}` (it has {})", name, g.link_name(t), on_t);
+  // The ground does not move: taken as a bar, the reduction would move its ends, and a true
+  // claim about the reduced mechanism would fail. It is refused as the driver bar is.
+  if (bar == g.ground()) return fmt::format("link `{}` is the ground: the ground cannot be a joined bar", name);
   return {};
 }
 

@@ -20,18 +20,20 @@ json point_json(const MechanismCheck::PointMotion& p) {
 
 }  // namespace
 
-json claims_summary_json(const std::vector<ClaimOutcome>& claims) {
+json claims_summary_json(const std::vector<ClaimOutcome>& claims, bool strict) {
   json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
                {"unexpected_failures", 0}};
+  if (strict) summary["not_as_expected"] = 0, summary["strict"] = true;
   for (const auto& cl : claims) {
     const std::string v(to_string(cl.verdict));
     summary[v] = summary[v].get<int>() + 1;
     if (cl.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
+    if (strict && !cl.is_as_expected(true)) summary["not_as_expected"] = summary["not_as_expected"].get<int>() + 1;
   }
   return summary;
 }
 
-void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims) {
+void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims, bool strict) {
   fmt::print(out, "\n{:<48} {:<13} {:<9} {}\n", "claim", "verdict", "expected", "evidence");
   for (const auto& cl : claims) {
     std::string evidence = cl.error;
@@ -40,20 +42,22 @@ void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claim
       evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
                                                  : fmt::format("{}: {} vs {}", h.label, h.lhs, h.rhs);
     }
+    if (strict && !cl.is_as_expected(true)) evidence += "  <-- NOT AS EXPECTED (strict)";
     fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
                evidence);
   }
 }
 
 void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
-                         const std::vector<std::string>& not_applicable) {
-  write_claim_table(out, claims);
+                         const std::vector<std::string>& not_applicable, bool strict) {
+  write_claim_table(out, claims, strict);
   if (!not_applicable.empty()) {
     fmt::print(out, "\nnot applicable:");
     for (const auto& id : not_applicable) fmt::print(out, " {}", id);
     fmt::print(out, "\n");
   }
-  fmt::print(out, "\nexit status {}\n", exit_status(claims));
+  fmt::print(out, "\nexit status {}{}\n", exit_status(claims, strict),
+             strict ? " (strict: undefined or inconclusive on a true claim counts)" : "");
 }
 
 json to_json(const MechanismCheck& c) {
@@ -70,7 +74,7 @@ json to_json(const MechanismCheck& c) {
     tables[t.title] = rows;
   }
   for (const auto& cl : c.claims) claims.push_back(to_json(cl));
-  const json summary = claims_summary_json(c.claims);
+  const json summary = claims_summary_json(c.claims, c.strict);
   json j = {{"scene", c.scene},
           {"arithmetic", std::string(to_string(c.arithmetic))},
           {"arithmetic_note", c.arithmetic_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.arithmetic_note)},
@@ -123,7 +127,7 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
     fmt::print(out, "\n{}\n", t.title);
     for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);
   }
-  write_claim_section(out, c.claims, c.not_applicable);
+  write_claim_section(out, c.claims, c.not_applicable, c.strict);
 }
 
 }  // namespace linkproof

@@ -66,6 +66,20 @@ TEST(SceneAsk, BadItemsAreInputErrorsNamingTheField) {
   EXPECT_NE(ask_error("[{claims: [eq22], arithmetic: double}]").find("expected an item"), std::string::npos);
 }
 
+// An empty list asks for nothing, and a side is a number: both were accepted, contrary to
+// docs/ask.md ("an empty list", "an item given twice" are exit 2).
+TEST(SceneAsk, EmptyListsAndTheSameSideWrittenTwoWaysAreRefused) {
+  EXPECT_NE(ask_error("[claims: []]").find("ask[0].claims"), std::string::npos);
+  EXPECT_NE(ask_error("[claims: []]").find("empty"), std::string::npos);
+  EXPECT_NE(ask_error("[links: []]").find("empty"), std::string::npos);
+  EXPECT_NE(ask_error("[points: []]").find("empty"), std::string::npos);
+  EXPECT_NE(ask_error("[omega_dot(4), omega_dot(04)]").find("asked twice"), std::string::npos);
+  EXPECT_NE(ask_error("[omega_dot(4), omega_dot(04)]").find("ask[1]"), std::string::npos);
+  // Written with a leading zero alone, the side is read as the number it is.
+  EXPECT_EQ(with_ask("[omega_dot(004)]").ask->rates[0].subject.name, "4");
+  EXPECT_EQ(ask_error("[omega_dot(4), omega(04)]"), "");
+}
+
 TEST(SceneAsk, UnknownClaimNamesItsFieldAndTheClaimsThereAre) {
   const PolygonScene s = with_ask("[claims: [eq22, eq99]]");
   try {

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "report/report_checks.h"
 #include "support/cli_run.h"
 
 namespace linkproof {
@@ -230,6 +232,90 @@ const std::vector<Case>& corpus() {
          return std::vector<std::string>{"prove", "--file", write_temp("intzero.yaml", claim_file("omega_out + omega[1]*" + f)), "--ladder-seconds", "0"};
        },
        1, "", "disproved", ""},
+      // --- issue 24: report output safety. Figure files are named after the scene: a name that
+      // is a path wrote outside --out, a name with '/' or of 300 bytes failed after the HTML and
+      // Markdown were written; now every name becomes one file name inside --out.
+      {"ReportSceneNameWithDotDot",
+       [] {
+         return std::vector<std::string>{"report", write_temp("dotdot.yaml", polygon_scene("\"../../x\"", kPentagonJoints)),
+                                         "--format", "md", "--out", ::testing::TempDir() + "corpus_dotdot/a/b"};
+       },
+       0, "", "corpus_dotdot/a/b/_.._x-construction.svg", "/../"},
+      {"ReportAbsoluteSceneName",
+       [] {
+         return std::vector<std::string>{"report",
+                                         write_temp("abs.yaml", polygon_scene("\"/tmp/linkproof_corpus_abs\"", kPentagonJoints)),
+                                         "--format", "md", "--out", ::testing::TempDir() + "corpus_abs_out"};
+       },
+       0, "", "corpus_abs_out/_tmp_linkproof_corpus_abs-construction.svg", ""},
+      {"ReportSceneNameWithSlash",
+       [] {
+         return std::vector<std::string>{"report", write_temp("slash.yaml", polygon_scene("\"a/b\"", kPentagonJoints)),
+                                         "--format", "all", "--out", ::testing::TempDir() + "corpus_slash"};
+       },
+       0, "", "corpus_slash/a_b-construction.svg", ""},
+      {"ReportSceneName300Bytes",
+       [] {
+         return std::vector<std::string>{"report", write_temp("long.yaml", polygon_scene(std::string(300, 'n'), kPentagonJoints)),
+                                         "--format", "all", "--out", ::testing::TempDir() + "corpus_long"};
+       },
+       0, "", "corpus_long/" + std::string(183, 'n') + "-", std::string(184, 'n')},
+      // Names, description and link names that are LaTeX, HTML and Markdown: written, escaped
+      // (tests/report/report_output_safety_test.cpp checks the three files).
+      {"ReportHostileMechanismNames",
+       [] {
+         return std::vector<std::string>{"report", write_temp("hostile.yaml", test::hostile_fourbar_scene()), "--format",
+                                         "all", "--out", ::testing::TempDir() + "corpus_hostile"};
+       },
+       0, "", "corpus_hostile/bad_input_hostile.tex", ""},
+      {"ReportWithADirectoryInTheWay",
+       [] {
+         const std::string out = ::testing::TempDir() + "corpus_in_the_way";
+         std::filesystem::create_directories(out + "/pentagon.tex");
+         return std::vector<std::string>{"report", source_file("verify/scenes/pentagon.yaml"), "--format", "all",
+                                         "--out", out};
+       },
+       2, "pentagon.tex': a directory of that name is in the way", "", "wrote"},
+      // --- issue 24, items 9, 13, 14: options and inputs read but not honoured, overflow named
+      {"MechanismNear1e400InDoubleNamesTheOverflowNotTheMobility",
+       [] { return std::vector<std::string>{"check", write_temp("e400m.yaml", fourbar("[3e400, 4e400]", "[11e400, 10e400]", "[11e400, 0]")), "--arith", "double"}; },
+       0, "", "velocity constraints overflows", "mobility 3"},
+      {"MechanismNear1e400InDoubleHasNoConditionNumber",
+       [] { return std::vector<std::string>{"check", write_temp("e400j.yaml", fourbar("[3e400, 4e400]", "[11e400, 10e400]", "[11e400, 0]")), "--arith", "double", "--json"}; },
+       0, "", "\"condition\": null", "needs 3 input"},
+      {"MechanismNear1e200InDoubleSaysTheRoundedSolveDisagrees",
+       [] { return std::vector<std::string>{"check", write_temp("e200b.yaml", fourbar("[3e200, 4e200]", "[11e200, 10e200]", "[11e200, 0]")), "--arith", "double"}; },
+       0, "", "rounded solve disagrees with the exact one", "has mobility"},
+      {"AnInputWithoutOmegaDotNamesTheField",
+       [] {
+         std::string scene = fourbar("[3, 4]", "[11, 10]", "[11, 0]");
+         scene.replace(scene.find(", omega_dot: 5"), 14, "");
+         return std::vector<std::string>{"check", write_temp("no_omega_dot.yaml", scene)};
+       },
+       2, "mechanism.inputs[0].omega_dot: missing required field", "", ""},
+      {"AnEmptyClaimsListInAskIsRefused",
+       [] { return std::vector<std::string>{"check", write_temp("ask_empty.yaml", polygon_scene("p", kPentagonJoints) + "ask: [claims: []]\n")}; },
+       2, "ask[0].claims: the list of claim ids is empty", "", ""},
+      {"TheSameSideAskedAsFourAndZeroFourIsRefused",
+       [] { return std::vector<std::string>{"check", write_temp("ask_04.yaml", polygon_scene("p", kPentagonJoints) + "ask: [omega_dot(4), omega_dot(04)]\n")}; },
+       2, "`omega_dot(4)` is asked twice", "", ""},
+      {"CurvatureOfA100LoopChainIsRefusedBeforeTheWork",
+       [] {
+         std::string scene = "name: chain\nmechanism:\n  ground: g\n  joints:\n"
+                             "    - {name: O, type: revolute, links: [g, c], at: [0, 0]}\n"
+                             "    - {name: A, type: revolute, links: [c, l1], at: [1, 3]}\n"
+                             "    - {name: B1, type: revolute, links: [l1, r1], at: [5, 4]}\n"
+                             "    - {name: G1, type: revolute, links: [r1, g], at: [6, 0]}\n";
+         for (int i = 2; i <= 100; ++i) {
+           const std::string k = std::to_string(i), p = std::to_string(i - 1), x = std::to_string(5 * (i - 1));
+           scene += "    - {name: P" + k + ", type: revolute, links: [r" + p + ", l" + k + "], at: [" + x + ", 2]}\n";
+           scene += "    - {name: B" + k + ", type: revolute, links: [l" + k + ", r" + k + "], at: [" + x + "4, 5]}\n";
+           scene += "    - {name: G" + k + ", type: revolute, links: [r" + k + ", g], at: [" + x + "6, 0]}\n";
+         }
+         scene += "  inputs:\n    - {link: c, omega: 1, omega_dot: 0}\n";
+         return std::vector<std::string>{"curvature", write_temp("chain100.yaml", scene)};
+       },
+       2, "accepts at most 200 links", "", ""},
   };
   return cases;
 }

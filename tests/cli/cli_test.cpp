@@ -181,6 +181,31 @@ TEST(Cli, DeadCentreSceneReportsUndefinedNotAVerdict) {
   for (const auto& c : j["claims"]) EXPECT_EQ(c["verdict"], "undefined") << c["id"];
 }
 
+// --strict was read and then ignored on mechanism scenes: a true claim left undefined (the
+// curvature centre of a coupler point at the coupler's pole, where v x a = 0) exited 0.
+TEST(Cli, CheckStrictOnAMechanismSceneCountsAnUndefinedTrueClaim) {
+  std::ifstream in(scene("mechanisms/seed001_fourbar.yaml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string point = "at: [9, 14]";  // P, moved to the pole (11, 44/3) of the coupler
+  ASSERT_NE(yaml.find(point), std::string::npos);
+  yaml.replace(yaml.find(point), point.size(), "at: [11, 44/3]");
+  const std::string path = write_temp("strict_pole.yaml", yaml);
+  const CliRun plain = run_cli({"check", path});
+  EXPECT_EQ(plain.code, 0) << plain.out;
+  EXPECT_NE(plain.out.find("undefined"), std::string::npos);
+  const CliRun strict = run_cli({"check", path, "--strict"});
+  EXPECT_EQ(strict.code, 1) << strict.out;
+  EXPECT_NE(strict.out.find("NOT AS EXPECTED (strict)"), std::string::npos) << strict.out;
+  const CliRun json = run_cli({"check", path, "--strict", "--json"});
+  EXPECT_EQ(json.code, 1);
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["summary"]["not_as_expected"], 1);
+  EXPECT_EQ(j["summary"]["strict"], true);
+  EXPECT_EQ(j["exit_status"], 1);
+}
+
 TEST(Cli, SweepRunsAndReplaysACaseBySeedAndIndex) {
   const CliRun all = run_cli({"sweep", "--n", "5..6", "--count", "4", "--seed", "3", "--json"});
   ASSERT_EQ(all.code, 0) << all.err;

@@ -112,6 +112,9 @@ TEST(CurvatureCli, BadRequestsNameFileFieldAndProblem) {
       {"joint_joining:\n  - {link: \"3\", bars: [\"2\", \"4\"], order: 3}\n", "joint_joining[0].order", "expected 1"},
       {"joint_joining:\n  - {link: \"3\", bars: [\"4\", \"1\"]}\n", "joint_joining[0].bars[1]", "exactly one joint"},
       {"joint_joining:\n  - {link: \"3\", bars: [\"2\"]}\n", "joint_joining[0].bars", "2 bar"},
+      // The ground has two joints like a bar, but does not move (it was accepted, and the
+      // reduction's true claims then failed).
+      {"joint_joining:\n  - {link: \"4\", bars: [\"3\", \"1\"]}\n", "joint_joining[0].bars[1]", "is the ground"},
       {"curvature: 5\n", "curvature", "expected a list"},
   };
   int k = 0;

@@ -81,13 +81,52 @@ TEST(AskedMechanismCheck, ListsOnlyTheAskedLinkAndRunsOnlyTheAskedClaims) {
   EXPECT_EQ(c.claims[0].verdict, Verdict::Holds);
   EXPECT_TRUE(c.relative.empty());
   EXPECT_TRUE(c.joints.empty());
-  EXPECT_EQ(c.computed_links.size(), 4u);
+  // An asked claim is about the whole mechanism: it is evaluated on all six links.
+  EXPECT_EQ(c.computed_links.size(), 6u);
   EXPECT_EQ(c.all_links, 6);
   EXPECT_EQ(c.all_loops, 2);
-  EXPECT_EQ(c.loops, 1);
+  EXPECT_EQ(c.loops, 2);
+  // Without claims, only the sub-mechanism that determines CD is solved.
+  s.ask->claims = std::vector<AskedName>{};
+  const MechanismCheck rates_only = check_mechanism(s, {}, Arithmetic::Exact);
+  EXPECT_EQ(rates_only.computed_links.size(), 4u);
+  EXPECT_EQ(rates_only.loops, 1);
+  EXPECT_EQ(rates_only.omega_dot[0], whole.omega_dot[k]);
 
   s.ask->claims = std::vector<AskedName>{AskedName{"no_such_claim", "ask[1].claims[0]"}};
   EXPECT_THROW(check_mechanism(s, {}, Arithmetic::Exact), InputError);
+}
+
+// A claim asked beside one link is evaluated on the whole mechanism: for every bundled scene
+// and every link whose sub-mechanism is smaller than the whole, every claim asked with that link
+// has the whole check's verdict and headline (compound.rank once compared the ranks of a
+// four-bar cut out of a six-bar: "rank 1 vs 1: holds").
+TEST(AskedMechanismCheck, AClaimAskedBesideOneLinkHasTheWholeMechanismsVerdict) {
+  int compared = 0;
+  for (const std::string& path : bundled_scenes()) {
+    MechanismScene s = load_mechanism_scene(path);
+    if (!inputs_fix_motion(s.linkage, s.inputs)) continue;
+    s.ask.reset();
+    const MechanismCheck whole = check_mechanism(s, {}, Arithmetic::Exact);
+    for (int l = 0; l < s.linkage.link_count(); ++l) {
+      if (determined_sub_mechanism(s, {l}).kept_links.size() == static_cast<size_t>(s.linkage.link_count())) continue;
+      for (const ClaimOutcome& expected : whole.claims) {
+        SCOPED_TRACE(path + " link " + s.linkage.link_name(l) + " claim " + expected.info.id);
+        MechanismScene asked = s;
+        asked.ask = SceneAsk{};
+        asked.ask->links = {AskedName{s.linkage.link_name(l), "ask[0].links[0]"}};
+        asked.ask->claims = std::vector<AskedName>{AskedName{expected.info.id, "ask[1].claims[0]"}};
+        const MechanismCheck c = check_mechanism(asked, {}, Arithmetic::Exact);
+        ASSERT_EQ(c.claims.size(), 1u);
+        EXPECT_EQ(c.claims[0].verdict, expected.verdict);
+        EXPECT_EQ(c.claims[0].headline.lhs, expected.headline.lhs);
+        EXPECT_EQ(c.claims[0].headline.rhs, expected.headline.rhs);
+        ++compared;
+      }
+      break;  // one smaller sub-mechanism per scene is enough
+    }
+  }
+  EXPECT_GT(compared, 0);
 }
 
 TEST(AskedMechanismCheck, AnAskedJointIsListedWithItsWholeMechanismMotion) {

@@ -88,13 +88,17 @@ struct MechanismCheck {
   std::vector<ClaimOutcome> claims;
   std::vector<std::string> not_applicable;
   /// The scene's `ask` when it restricts (check/ask.h): only the asked links, joints and points
-  /// are listed (no relative rates), only the asked claims run, and everything is computed on
-  /// the smallest determined sub-mechanism found that contains them
-  /// (mechanism/sub_mechanism.h): its links are `computed_links`, of `all_links` links and
-  /// `all_loops` loops in the whole (mobility, loops, rank, condition are the sub-mechanism's).
+  /// are listed (no relative rates) and only the asked claims run. Asked claims are evaluated on
+  /// the whole mechanism (a claim may speak of any link, loop or rank); without them everything
+  /// is computed on the smallest determined sub-mechanism found that contains the asked links
+  /// (mechanism/sub_mechanism.h). Either way the links solved are `computed_links`, of
+  /// `all_links` links and `all_loops` loops in the whole (mobility, loops, rank, condition are
+  /// those of what was solved).
   std::optional<SceneAsk> ask;
   std::vector<std::string> computed_links;
   int all_links = 0, all_loops = 0;
+  /// --strict: undefined or inconclusive on a true claim is not as expected (exit 1).
+  bool strict = false;
 };
 
 /// The exact solution by the symbolic route (throws InputError for bad mobility/inputs).
@@ -106,7 +110,8 @@ MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& scene);
 MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<MechanismCatalogue>& catalogues,
                                Arithmetic a);
 
-/// 0 every claim as expected; 1 a claim expected to hold failed; 3 a claim errored.
+/// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
+/// claim errored.
 int exit_status(const MechanismCheck& check);
 
 /// Runs one claim: its comparisons judged exactly; an UndefinedQuantity thrown by the claim

@@ -26,13 +26,15 @@
 namespace linkproof {
 
 nlohmann::json to_json(const MechanismCheck& check);
-/// {"holds": n, "fails": n, "undefined": n, "inconclusive": n, "error": n, "unexpected_failures": n}
-nlohmann::json claims_summary_json(const std::vector<ClaimOutcome>& claims);
-/// The text table of claims: id, verdict, expected, headline evidence.
-void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims);
+/// {"holds": n, "fails": n, "undefined": n, "inconclusive": n, "error": n, "unexpected_failures": n};
+/// with `strict` also "not_as_expected": n and "strict": true.
+nlohmann::json claims_summary_json(const std::vector<ClaimOutcome>& claims, bool strict = false);
+/// The text table of claims: id, verdict, expected, headline evidence; with `strict` a claim not
+/// as expected under it is marked "<-- NOT AS EXPECTED (strict)".
+void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims, bool strict = false);
 /// The claim table, the ids not applicable and the exit status (the end of a text report).
 void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
-                         const std::vector<std::string>& not_applicable);
+                         const std::vector<std::string>& not_applicable, bool strict = false);
 void write_text(std::ostream& out, const MechanismCheck& check);
 
 }  // namespace linkproof
