@@ -72,8 +72,15 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
       }
       if (position >= cases.size())
         throw InputError(o.out, fmt::format("line {}", number), "more cases than this sweep has");
-      check_case_identity(line, cases[position], o.sweep, o.out, fmt::format("line {}", number));
+      check_case_identity(line, cases[position], o.sweep, catalogue, o.out, fmt::format("line {}", number));
       sink->add(*line.sweep_case, false, o.out, fmt::format("line {}", number));
+      // The line must be the very line this run writes for the case: the evidence the report
+      // keeps and no other (add() trimmed the case to it), nothing added or reordered.
+      if (sweep_case_line(*line.sweep_case, o.sweep.arithmetic) != text)
+        throw InputError(o.out, fmt::format("line {}", number),
+                         fmt::format("is not the line this sweep writes for case {}: it holds evidence the report "
+                                     "does not keep (a line of another shard or sweep, or edited)",
+                                     line.sweep_case->k));
       ++position;
     });
     result.cases_resumed = static_cast<long>(position);

@@ -84,7 +84,7 @@ SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOp
     auto line = read(s);
     if (!line || !line->sweep_case)
       throw InputError(source(s), where, fmt::format("case {} expected: shard {}/{} is incomplete", k, s + 1, shards));
-    check_case_identity(*line, k, o, source(s), where);
+    check_case_identity(*line, k, o, catalogue, source(s), where);
     sink.add(*line->sweep_case, true, source(s), where);
   }
   for (int s = 0; s < shards; ++s) {
