@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <optional>
 
 #include <fmt/format.h>
@@ -120,6 +121,9 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
     for (size_t i = 0; i < rest.size(); ++i) {
       if (TimeBudget::expired()) break;
       WorkerPool::Next next = pool.next();
+      // A worker's allocation failure is the run's, as in one process: the caller reports the
+      // memory budget (every completed case is in the result file).
+      if (next.out_of_memory) throw std::bad_alloc();
       if (!next.line) {
         if (next.signal == 0) {
           result.status = BatchSweepResult::Status::WorkerFailed;
