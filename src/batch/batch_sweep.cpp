@@ -147,15 +147,10 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
   if (result.status == BatchSweepResult::Status::Complete && TimeBudget::expired() &&
       done < static_cast<long>(cases.size())) {
     result.status = BatchSweepResult::Status::OutOfTime;
-    result.message = fmt::format("stopped by the time budget of {} s (--max-seconds) after {} of {} cases",
+    result.message = fmt::format("stopped by the time budget of {} s after {} of {} cases",
                                  TimeBudget::limit_seconds(), done, cases.size());
   }
-  if (result.status != BatchSweepResult::Status::Complete)
-    result.message += o.out.empty() ? "; nothing was saved (--out FILE keeps every completed case)"
-                                    : fmt::format("; {} holds every completed case: rerun the same command with "
-                                                  "--resume to continue",
-                                                  o.out);
-  else if (file && !summary)
+  if (result.status == BatchSweepResult::Status::Complete && file && !summary)
     file->append(sweep_summary_line(sink->tally().report(), o.shard));
   result.report = sink->tally().report();
   result.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

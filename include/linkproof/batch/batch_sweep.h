@@ -34,7 +34,7 @@ struct BatchSweepResult {
   Status status = Status::Complete;
   SweepReport report;      ///< of every case done, read back or computed
   int signal = 0;          ///< Interrupted: the signal
-  std::string message;     ///< not Complete: what happened and how to continue
+  std::string message;     ///< not Complete: what happened (how to continue is the caller's to say)
   long cases_resumed = 0;  ///< cases read back from the result file
   long cases_run = 0;      ///< cases computed by this run
   bool already_complete = false;  ///< the result file already held the summary line
