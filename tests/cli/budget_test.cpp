@@ -49,7 +49,10 @@ struct ProgramRun {
 // The command line run as the program runs it (RunMode::Program: watchdog and memory limit) in a
 // forked child whose stdout and stderr go to files, as the watchdog writes to the descriptors.
 ProgramRun run_program(const std::vector<std::string>& args) {
-  const std::string out_path = ::testing::TempDir() + "budget_out.txt", err_path = ::testing::TempDir() + "budget_err.txt";
+  // Named for this process: ctest runs tests in parallel processes that share TempDir().
+  const std::string tag = std::to_string(::getpid());
+  const std::string out_path = ::testing::TempDir() + "budget_out_" + tag + ".txt",
+                    err_path = ::testing::TempDir() + "budget_err_" + tag + ".txt";
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
   if (pid == 0) {
