@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <optional>
 
 #include <fmt/format.h>
@@ -72,8 +73,15 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
       }
       if (position >= cases.size())
         throw InputError(o.out, fmt::format("line {}", number), "more cases than this sweep has");
-      check_case_identity(line, cases[position], o.sweep, o.out, fmt::format("line {}", number));
+      check_case_identity(line, cases[position], o.sweep, catalogue, o.out, fmt::format("line {}", number));
       sink->add(*line.sweep_case, false, o.out, fmt::format("line {}", number));
+      // The line must be the very line this run writes for the case: the evidence the report
+      // keeps and no other (add() trimmed the case to it), nothing added or reordered.
+      if (sweep_case_line(*line.sweep_case, o.sweep.arithmetic) != text)
+        throw InputError(o.out, fmt::format("line {}", number),
+                         fmt::format("is not the line this sweep writes for case {}: it holds evidence the report "
+                                     "does not keep (a line of another shard or sweep, or edited)",
+                                     line.sweep_case->k));
       ++position;
     });
     result.cases_resumed = static_cast<long>(position);
@@ -113,6 +121,9 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
     for (size_t i = 0; i < rest.size(); ++i) {
       if (TimeBudget::expired()) break;
       WorkerPool::Next next = pool.next();
+      // A worker's allocation failure is the run's, as in one process: the caller reports the
+      // memory budget (every completed case is in the result file).
+      if (next.out_of_memory) throw std::bad_alloc();
       if (!next.line) {
         if (next.signal == 0) {
           result.status = BatchSweepResult::Status::WorkerFailed;
@@ -136,15 +147,10 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
   if (result.status == BatchSweepResult::Status::Complete && TimeBudget::expired() &&
       done < static_cast<long>(cases.size())) {
     result.status = BatchSweepResult::Status::OutOfTime;
-    result.message = fmt::format("stopped by the time budget of {} s (--max-seconds) after {} of {} cases",
+    result.message = fmt::format("stopped by the time budget of {} s after {} of {} cases",
                                  TimeBudget::limit_seconds(), done, cases.size());
   }
-  if (result.status != BatchSweepResult::Status::Complete)
-    result.message += o.out.empty() ? "; nothing was saved (--out FILE keeps every completed case)"
-                                    : fmt::format("; {} holds every completed case: rerun the same command with "
-                                                  "--resume to continue",
-                                                  o.out);
-  else if (file && !summary)
+  if (result.status == BatchSweepResult::Status::Complete && file && !summary)
     file->append(sweep_summary_line(sink->tally().report(), o.shard));
   result.report = sink->tally().report();
   result.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -84,7 +84,7 @@ SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOp
     auto line = read(s);
     if (!line || !line->sweep_case)
       throw InputError(source(s), where, fmt::format("case {} expected: shard {}/{} is incomplete", k, s + 1, shards));
-    check_case_identity(*line, k, o, source(s), where);
+    check_case_identity(*line, k, o, catalogue, source(s), where);
     sink.add(*line->sweep_case, true, source(s), where);
   }
   for (int s = 0; s < shards; ++s) {
@@ -109,7 +109,8 @@ SweepReport merge_sweep_files(const std::vector<Claim>& catalogue, const std::ve
   for (const auto& f : files) {
     const std::string last = last_line(f);
     SweepLine line = last.empty() ? SweepLine{} : parse_sweep_line(last, f, 0);
-    if (!line.summary) throw InputError(f, "<last line>", "no summary line: the shard is incomplete (finish it with --resume)");
+    if (!line.summary) throw InputError(f, "<last line>", "no summary line: the shard is incomplete (its sweep stopped before the end: resume that sweep "
+                                                     "to complete the file)");
     auto [o, shard] = sweep_of_summary(*line.summary, f);
     if (sweep && (o.seed != sweep->seed || o.n_min != sweep->n_min || o.n_max != sweep->n_max ||
                   o.count != sweep->count || o.arithmetic != sweep->arithmetic || shard.n != shards))

@@ -15,8 +15,10 @@ namespace linkproof {
 ResultFile::ResultFile(const std::string& path, bool resume, const LineVisitor& visit) : path_(path) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(path, ec);
+  if (exists && !std::filesystem::is_regular_file(path, ec))
+    throw InputError(path, "--out", "is not a regular file (a result file is appended to and read back)");
   if (exists && !resume && std::filesystem::file_size(path, ec) > 0)
-    throw InputError(path, "--out", "exists and is not empty; pass --resume to continue it, or remove it");
+    throw ResultFileExists(path, "--out", "exists and is not empty (a result file is never overwritten)");
   if (exists && resume) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "--out", "cannot be read");

@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <new>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -18,7 +20,10 @@ namespace linkproof {
 
 namespace {
 
-bool write_all(int fd, const std::string& data) {
+// A worker's last line: "!" then what went wrong; this one for std::bad_alloc.
+constexpr char kOutOfMemoryLine[] = "!\x01out of memory\n";
+
+bool write_all(int fd, std::string_view data) {
   size_t done = 0;
   while (done < data.size()) {
     const ssize_t w = ::write(fd, data.data() + done, data.size() - done);
@@ -39,6 +44,10 @@ bool write_all(int fd, const std::string& data) {
   try {
     for (size_t i = w; i < cases.size(); i += jobs)
       if (!write_all(fd, work(cases[i]) + "\n")) ::_exit(1);
+  } catch (const std::bad_alloc&) {
+    // The memory budget is spent: report it without allocating (a string_view of a literal).
+    write_all(fd, std::string_view(kOutOfMemoryLine));
+    ::_exit(3);
   } catch (const std::exception& e) {
     std::string message = e.what();
     for (char& c : message)
@@ -125,7 +134,9 @@ WorkerPool::Next WorkerPool::next() {
   std::string line = buffer.substr(0, newline);
   buffer.erase(0, newline + 1);
   if (!line.empty() && line[0] == '!') {
-    out.failure = fmt::format("worker {} failed on case {}: {}", w + 1, cases_[position_], line.substr(1));
+    out.out_of_memory = line + "\n" == kOutOfMemoryLine;
+    out.failure = fmt::format("worker {} failed on case {}: {}", w + 1, cases_[position_],
+                              out.out_of_memory ? "out of memory (std::bad_alloc)" : line.substr(1));
     return out;
   }
   ++position_;

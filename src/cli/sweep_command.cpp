@@ -10,6 +10,7 @@
 
 #include "dijksman1966.h"
 #include "linkproof/batch/batch_sweep.h"
+#include "linkproof/batch/result_file.h"
 #include "linkproof/batch/worker_pool.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/report/text_report.h"
@@ -71,10 +72,21 @@ int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream
     throw InputError("<command line>", "--index", "replays one case; it cannot be combined with --out or --shard");
   // The bar only on the real stderr, and only when it is a terminal.
   if (&err == &std::cerr && ::isatty(STDERR_FILENO)) b.progress = &err;
-  const BatchSweepResult r = run_batch_sweep(dijksman1966::catalogue(), b);
-  if (r.status == BatchSweepResult::Status::OutOfTime) throw InputError("<command line>", "--max-seconds", r.message);
+  BatchSweepResult r;
+  try {
+    r = run_batch_sweep(dijksman1966::catalogue(), b);
+  } catch (const ResultFileExists& e) {
+    throw InputError(e.source(), e.field(), e.problem() + "; pass --resume to continue it, or remove it");
+  }
   if (r.status != BatchSweepResult::Status::Complete) {
-    fmt::print(err, "linkproof sweep: {}\n", r.message);
+    // How to continue: the options are this command's, so the hint is written here.
+    const std::string hint = a.out.empty() ? "; nothing was saved (--out FILE keeps every completed case)"
+                                           : fmt::format("; {} holds every completed case: rerun the same command "
+                                                         "with --resume to continue",
+                                                         a.out);
+    if (r.status == BatchSweepResult::Status::OutOfTime)
+      throw InputError("<command line>", "--max-seconds", r.message + hint);
+    fmt::print(err, "linkproof sweep: {}{}\n", r.message, hint);
     return r.exit_status();
   }
   return print_report(out, r.report, a.json, r.exit_status());

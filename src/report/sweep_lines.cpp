@@ -1,5 +1,9 @@
 #include "linkproof/report/sweep_lines.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+
 #include <fmt/format.h>
 
 #include "linkproof/core/error.h"
@@ -40,6 +44,12 @@ std::string optional_text(const json& j, const char* key, const std::string& fil
 
 }  // namespace
 
+std::string sweep_line_digest(const std::string& canonical_line) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a, 64 bits
+  for (unsigned char c : canonical_line) h = (h ^ c) * 0x100000001b3ULL;
+  return fmt::format("{:016x}", h);
+}
+
 std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic) {
   json verdicts = json::object();
   for (const auto& [id, v] : c.verdicts) verdicts[id] = std::string(to_string(v));
@@ -50,10 +60,11 @@ std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic) {
     examples.push_back(std::move(x));
   }
   const RandomPolygonCase& p = c.polygon;
-  return json{{"case", c.k},          {"seed", p.seed},       {"n", p.n},
-              {"index", p.index},     {"family", p.family},   {"arithmetic", std::string(to_string(arithmetic))},
-              {"verdicts", verdicts}, {"examples", examples}, {"not_applicable", c.not_applicable}}
-      .dump();
+  json line{{"case", c.k},          {"seed", p.seed},       {"n", p.n},
+            {"index", p.index},     {"family", p.family},   {"arithmetic", std::string(to_string(arithmetic))},
+            {"verdicts", verdicts}, {"examples", examples}, {"not_applicable", c.not_applicable}};
+  line["digest"] = sweep_line_digest(line.dump());
+  return line.dump();
 }
 
 std::string sweep_summary_line(const SweepReport& report, const Shard& shard) {
@@ -99,6 +110,33 @@ SweepLine parse_sweep_line(const std::string& line, const std::string& file, lon
     out.summary = member(j, "summary", json::value_t::object, file, where);
     return out;
   }
+  // The digest first: an edited line is reported as edited, whatever else it breaks.
+  const auto digest = j.find("digest");
+  if (digest == j.end() || !digest->is_string())
+    throw InputError(file, where + ".digest",
+                     "missing: every case line carries the digest of its content (a line of an older linkproof, or "
+                     "edited)");
+  {
+    json content = j;
+    content.erase("digest");
+    std::string canonical, written;
+    try {
+      canonical = content.dump();
+      written = j.dump();
+    } catch (const json::type_error& e) {
+      throw InputError(file, where, std::string("not valid UTF-8: ") + e.what());
+    }
+    if (sweep_line_digest(canonical) != digest->get<std::string>())
+      throw InputError(file, where + ".digest",
+                       "does not match the line's content: the line was edited or damaged after it was written");
+    if (written != line)
+      throw InputError(file, where, "is not in the form linkproof writes (keys sorted, no spaces): edited by hand");
+  }
+  static const char* const kCaseKeys[] = {"arithmetic", "case",    "digest", "examples",       "family",
+                                          "index",      "n",       "seed",   "not_applicable", "verdicts"};
+  for (const auto& [key, value] : j.items())
+    if (std::find(std::begin(kCaseKeys), std::end(kCaseKeys), key) == std::end(kCaseKeys))
+      throw InputError(file, where + "." + key, "is not a field of a case line");
   const json& seed = j.find("seed") != j.end() && j["seed"].is_number_unsigned() ? j["seed"] : json();
   if (seed.is_null()) throw InputError(file, where + ".seed", "missing or not an unsigned integer");
   const long k = member(j, "case", json::value_t::number_integer, file, where).get<long>();

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -43,6 +44,31 @@ std::string fourbar(const std::string& a, const std::string& b, const std::strin
          "    - {name: B,  type: revolute, links: [\"3\", \"4\"], at: " + b + "}\n"
          "    - {name: O4, type: revolute, links: [\"4\", \"1\"], at: " + o4 + "}\n"
          "  inputs:\n    - {link: \"2\", omega: 2, omega_dot: 5}\n";
+}
+
+// A small sweep's result file (3 cases of n = 5) with line 2 changed by `edit`, and the command
+// line that resumes it.
+std::vector<std::string> resume_of_edited_sweep(const std::string& name,
+                                                const std::function<void(nlohmann::json&)>& edit) {
+  const std::string path = write_temp(name + ".jsonl", "");
+  std::remove(path.c_str());
+  const std::vector<std::string> sweep = {"sweep", "--n", "5", "--count", "3", "--jobs", "1", "--out", path};
+  test::run_cli(sweep);
+  std::ifstream in(path, std::ios::binary);
+  std::string text, line;
+  for (int number = 1; number <= 2 && std::getline(in, line); ++number) {
+    if (number == 2) {
+      nlohmann::json j = nlohmann::json::parse(line);
+      edit(j);
+      line = j.dump();
+    }
+    text += line + "\n";
+  }
+  in.close();
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+  std::vector<std::string> resume = sweep;
+  resume.insert(resume.end(), {"--resume", "--json"});
+  return resume;
 }
 
 struct Case {
@@ -316,6 +342,34 @@ const std::vector<Case>& corpus() {
          return std::vector<std::string>{"curvature", write_temp("chain100.yaml", scene)};
        },
        2, "accepts at most 200 links", "", ""},
+      // --- issue 24: sweeps, result files, merge
+      {"ResumeOfAResultFileWithAnEditedVerdict",  // was carried into the summary (exit 0)
+       [] { return resume_of_edited_sweep("edited_verdict", [](nlohmann::json& j) { j["verdicts"].begin().value() = "inconclusive"; }); },
+       2, "line 2.digest: does not match", "", "\"cases\""},
+      {"ResumeOfAResultFileWithAClaimMovedToNotApplicable",
+       [] {
+         return resume_of_edited_sweep("moved_claim", [](nlohmann::json& j) {
+           const std::string id = j["verdicts"].begin().key();
+           j["verdicts"].erase(id);
+           j["not_applicable"].push_back(id);
+         });
+       },
+       2, "line 2", "", "\"cases\""},
+      {"ResumeOfAResultFileWithAnUnknownClaim",
+       [] { return resume_of_edited_sweep("unknown_claim", [](nlohmann::json& j) { j["verdicts"]["dijksman1966.eq99"] = "holds"; }); },
+       2, "line 2", "", "\"cases\""},
+      {"MergeOutDevNullNamesNoOptionMergeLacks",  // suggested --resume, which merge does not have
+       [] {
+         const std::string s1 = write_temp("merge_s1.jsonl", ""), s2 = write_temp("merge_s2.jsonl", "");
+         std::remove(s1.c_str());
+         std::remove(s2.c_str());
+         test::run_cli({"sweep", "--n", "5", "--count", "2", "--jobs", "1", "--shard", "1/2", "--out", s1});
+         test::run_cli({"sweep", "--n", "5", "--count", "2", "--jobs", "1", "--shard", "2/2", "--out", s2});
+         return std::vector<std::string>{"merge", "--out", "/dev/null", s1, s2};
+       },
+       2, "/dev/null: --out: is not a regular file", "", ""},
+      {"SweepNAboveTheLimit", [] { return std::vector<std::string>{"sweep", "--n", "599", "--count", "1"}; }, 2, "<= 200", "", ""},
+      {"SweepNOfAMillion", [] { return std::vector<std::string>{"sweep", "--n", "4..1000000", "--count", "1"}; }, 2, "<= 200", "", ""},
   };
   return cases;
 }

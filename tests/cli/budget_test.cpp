@@ -13,6 +13,7 @@
 #include <fstream>
 
 #include "batch/sweep_files.h"
+#include "dijksman1966.h"
 #include "budget_watchdog.h"
 #include "support/cli_run.h"
 
@@ -48,7 +49,10 @@ struct ProgramRun {
 // The command line run as the program runs it (RunMode::Program: watchdog and memory limit) in a
 // forked child whose stdout and stderr go to files, as the watchdog writes to the descriptors.
 ProgramRun run_program(const std::vector<std::string>& args) {
-  const std::string out_path = ::testing::TempDir() + "budget_out.txt", err_path = ::testing::TempDir() + "budget_err.txt";
+  // Named for this process: ctest runs tests in parallel processes that share TempDir().
+  const std::string tag = std::to_string(::getpid());
+  const std::string out_path = ::testing::TempDir() + "budget_out_" + tag + ".txt",
+                    err_path = ::testing::TempDir() + "budget_err_" + tag + ".txt";
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -142,7 +146,9 @@ TEST(Budget, WatchdogStopsAStepThatNeverReachesACheckPoint) {
 
 // Under a 1 MiB address-space limit (below what the program already maps) the first large
 // allocation fails: it is reported as the memory budget (exit 2, one JSON object), not a crash
-// and not an internal error.
+// and not an internal error. The check is of a 40-gon, not of a small bundled scene: run after
+// other tests in the same process (a gtest filter), the forked child inherits their freed heap,
+// which served a hexagon's few allocations without growing the address space (exit 0).
 TEST(Budget, MemoryLimitEndsTheRunWithExitTwo) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS under it";
@@ -151,12 +157,58 @@ TEST(Budget, MemoryLimitEndsTheRunWithExitTwo) {
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS under it";
 #endif
 #endif
-  const std::string scene = std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/hexagon.yaml";
+  std::string joints, rates;
+  for (int i = 0; i < 40; ++i) joints += (i ? ", [" : "[") + std::to_string(i) + ", " + std::to_string(i * i) + "]";
+  for (int j = 0; j < 37; ++j) rates += (j ? ", " : "") + std::string("1");
+  const std::string scene = ::testing::TempDir() + "budget_40gon.yaml";
+  std::ofstream(scene) << "name: big\npolygon:\n  joints: [" << joints << "]\n  omega: [" << rates
+                       << "]\n  omega_dot: [" << rates << "]\n";
   const ProgramRun r = run_program({"check", scene, "--max-memory-mb", "1", "--json"});
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["error"]["field"], "--max-memory-mb") << r.out;
   EXPECT_NE(r.err.find("memory budget of 1 MiB exceeded"), std::string::npos) << r.err;
+}
+
+// The address space of this process in MiB (VmSize), what a forked child starts with.
+long address_space_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  long kib = 0;
+  while (status >> key) {
+    if (key == "VmSize:") {
+      status >> kib;
+      break;
+    }
+  }
+  return kib / 1024;
+}
+
+// A sweep worker inherits the memory budget; an allocation past it failed the run as an
+// internal error (exit 3, "worker 1 failed on case 0: std::bad_alloc") where one process
+// reports the budget (exit 2). The budget leaves the parent room for its own small work (the
+// catalogue is built before the limit) but not a case at n = kHeavyN.
+TEST(Budget, SweepWorkerPastTheMemoryBudgetIsExitTwoAsInOneProcess) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS under it";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS under it";
+#endif
+#endif
+  constexpr int kHeavyN = 200;
+  (void)dijksman1966::catalogue();
+  const std::string budget = std::to_string(address_space_mib() + 16);
+  for (const char* jobs : {"1", "2"}) {
+    SCOPED_TRACE(std::string("--jobs ") + jobs);
+    const ProgramRun r = run_program({"sweep", "--n", std::to_string(kHeavyN), "--count", "2", "--jobs", jobs,
+                                      "--max-memory-mb", budget, "--json"});
+    EXPECT_EQ(r.code, 2) << r.out << r.err;
+    const auto j = nlohmann::json::parse(r.out, nullptr, false);
+    ASSERT_FALSE(j.is_discarded()) << r.out << r.err;
+    EXPECT_EQ(j["error"]["field"], "--max-memory-mb") << r.out;
+    EXPECT_NE(r.err.find("memory budget of " + budget + " MiB exceeded"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

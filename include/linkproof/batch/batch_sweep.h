@@ -34,7 +34,7 @@ struct BatchSweepResult {
   Status status = Status::Complete;
   SweepReport report;      ///< of every case done, read back or computed
   int signal = 0;          ///< Interrupted: the signal
-  std::string message;     ///< not Complete: what happened and how to continue
+  std::string message;     ///< not Complete: what happened (how to continue is the caller's to say)
   long cases_resumed = 0;  ///< cases read back from the result file
   long cases_run = 0;      ///< cases computed by this run
   bool already_complete = false;  ///< the result file already held the summary line
@@ -46,7 +46,10 @@ struct BatchSweepResult {
 };
 
 /// Runs (or continues) the sweep. InputError for a bad --out/--scenes path, or a result file that
-/// belongs to another sweep (different seed, n, count, arithmetic or shard) or is corrupt.
+/// belongs to another sweep (different seed, n, count, arithmetic or shard), is corrupt or was
+/// edited (every line read back is checked: report/sweep_lines.h, check_case_identity); a
+/// ResultFileExists for a non-empty `out` without `resume`. std::bad_alloc when an allocation
+/// fails, in this process or in a worker (the result file keeps every completed case).
 BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const BatchSweepOptions& options);
 
 /// The cases of `shard` in case order.

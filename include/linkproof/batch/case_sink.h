@@ -37,8 +37,12 @@ class CaseSink {
 };
 
 /// Checks that `line` (a case line of `file`, at `where`) is case `expected` of sweep `o`: same
-/// case number, seed, n, index and arithmetic. InputError otherwise, naming both cases.
-void check_case_identity(const SweepLine& line, long expected, const SweepOptions& o, const std::string& file,
-                         const std::string& where);
+/// case number, seed, n, index and arithmetic (InputError naming both cases otherwise), and that
+/// it holds what a run of `catalogue` gives at its n: a verdict of every claim that applies at n
+/// and of no other, and the others listed as not applicable in catalogue order (InputError
+/// naming the claim otherwise). With the line's digest (report/sweep_lines.h), this is how a
+/// line read back (--resume, merge) is trusted.
+void check_case_identity(const SweepLine& line, long expected, const SweepOptions& o,
+                         const std::vector<Claim>& catalogue, const std::string& file, const std::string& where);
 
 }  // namespace linkproof

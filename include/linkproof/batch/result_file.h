@@ -9,7 +9,15 @@
 #include <functional>
 #include <string>
 
+#include "linkproof/core/error.h"
+
 namespace linkproof {
+
+/// The result file exists, is not empty, and was not opened to be continued.
+class ResultFileExists : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 class ResultFile {
  public:
@@ -17,8 +25,12 @@ class ResultFile {
   using LineVisitor = std::function<void(const std::string& line, long number)>;
 
   /// Opens `path` for appending. With `resume`, an existing file's complete lines go to `visit`
-  /// first and a trailing partial line is removed; without it, an existing non-empty file is an
-  /// InputError (nothing is overwritten). A missing file is created either way.
+  /// first and a trailing partial line is removed; without it, an existing non-empty file is a
+  /// ResultFileExists (nothing is overwritten). A missing file is created either way. A path that
+  /// exists and is not a regular file (/dev/null, a directory, a FIFO) is an InputError: a result
+  /// file is read back and appended to. Messages name no command-line option but the field
+  /// "--out" (every command that writes a result file calls it that): what the user can do
+  /// about it is for the command to say.
   ResultFile(const std::string& path, bool resume, const LineVisitor& visit);
   ~ResultFile();
   ResultFile(const ResultFile&) = delete;

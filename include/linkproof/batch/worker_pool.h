@@ -20,7 +20,8 @@ namespace linkproof {
 class WorkerPool {
  public:
   /// Computes case k in a worker and returns its line (no newline). Runs after fork(), in the
-  /// child; must not write to the parent's files. An exception ends the run with its message.
+  /// child; must not write to the parent's files. An exception ends the run with its message;
+  /// std::bad_alloc is reported as such (Next::out_of_memory), without allocating.
   using Work = std::function<std::string(long k)>;
 
   WorkerPool(int jobs, std::vector<long> cases, Work work);
@@ -34,6 +35,9 @@ class WorkerPool {
     std::optional<std::string> line;  ///< the next case's line, in the order of `cases`
     int signal = 0;                   ///< SIGINT/SIGTERM received by this process while waiting
     std::string failure;              ///< a worker died or failed: what happened
+    /// The worker's failure was std::bad_alloc (an allocation past the memory limit the
+    /// workers inherit): the caller rethrows it, as the same failure in one process would.
+    bool out_of_memory = false;
   };
   Next next();
 
