@@ -32,7 +32,8 @@
 //              its positions do not close the loops of the scene's mechanism.
 //              The scene's coordinates are exact (integers, fractions, decimals), except that a
 //              decimal value with 16 or more significant digits is taken as a printed binary64
-//              and uncertain by one ulp at the scene's scale (rational_uncertainty).
+//              and uncertain by one ulp at the scene's scale (scene_coordinate_uncertainty in
+//              io/motion_data.h).
 // A sample with no recorded value to compare is "nothing compared"; a file in which no value at
 // all was compared is not a pass (exit 1).
 // Prismatic pairs must have the ground as guide (the axis is read from the scene).
