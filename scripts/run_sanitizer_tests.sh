@@ -23,6 +23,7 @@ echo "==> sanitizer: ${configure[*]}"
 "${configure[@]}"
 targets=(linkproof_tests fuzz_polygon_scene fuzz_mechanism_scene fuzz_claim_file fuzz_cli_args)
 targets+=(fuzz_report)  # issue 24: report output safety
+targets+=(fuzz_check_data)
 echo "==> sanitizer: cmake --build build-fuzz --target ${targets[*]} -j${jobs}"
 build_start=$SECONDS
 cmake --build build-fuzz --target "${targets[@]}" -j"${jobs}"

@@ -53,7 +53,8 @@ struct Column {
 
 class DataReader {
  public:
-  DataReader(std::string source, const MechanismScene& scene) : source_(std::move(source)), scene_(scene) {}
+  DataReader(std::string source, const MechanismScene& scene)
+      : source_(std::move(source)), scene_(scene), allowed_(allowed_columns()) {}
 
   MotionData read(const std::string& text) {
     MotionData data;
@@ -84,7 +85,7 @@ class DataReader {
     throw InputError(source_, field, problem);
   }
   std::string where(int line, size_t col) const {
-    return fmt::format("line {}, column {} (`{}`)", line, col + 1, columns_[col].name);
+    return fmt::format("line {}, column {} ({})", line, col + 1, yaml_io::backticked(columns_[col].name));
   }
 
   bool is_input_link(int link) const {
@@ -92,42 +93,82 @@ class DataReader {
       if (in.kind == MechanismInput::Kind::Link && in.index == link) return true;
     return false;
   }
+  bool is_input_joint(int joint) const {
+    for (const auto& in : scene_.inputs)
+      if (in.kind != MechanismInput::Kind::Link && in.index == joint) return true;
+    return false;
+  }
+
+  /// Every column name this scene allows, with its meaning(s): matching whole names keeps a joint
+  /// named `a` or `omega` from being read as a rate column.
+  std::map<std::string, std::vector<Column>> allowed_columns() const {
+    std::map<std::string, std::vector<Column>> m;
+    const auto add = [&](const std::string& name, Column::Kind kind, int index) { m[name].push_back({kind, index, name}); };
+    add("sample", Column::Label, 0);
+    add("t", Column::Carried, 0);
+    add("input_angle", Column::Carried, 0);
+    const Linkage& g = scene_.linkage;
+    for (int j = 0; j < g.joint_count(); ++j) {
+      add(g.joint(j).name + ".x", Column::X, j);
+      add(g.joint(j).name + ".y", Column::Y, j);
+      if (g.joint(j).type == JointType::Prismatic) {
+        add("v." + g.joint(j).name, Column::SlideV, j);
+        add("a." + g.joint(j).name, Column::SlideA, j);
+      }
+    }
+    for (int l = 0; l < g.link_count(); ++l) {
+      if (l == g.ground()) continue;
+      add("omega." + g.link_name(l), Column::Omega, l);
+      add("alpha." + g.link_name(l), Column::Alpha, l);
+    }
+    return m;
+  }
+
+  std::string meaning(const Column& c) const {
+    const Linkage& g = scene_.linkage;
+    switch (c.kind) {
+      case Column::Label: return "the sample label";
+      case Column::Carried: return "a carried column";
+      case Column::X: return fmt::format("the x of joint `{}`", g.joint(c.index).name);
+      case Column::Y: return fmt::format("the y of joint `{}`", g.joint(c.index).name);
+      case Column::Omega: return fmt::format("the omega of link `{}`", g.link_name(c.index));
+      case Column::Alpha: return fmt::format("the alpha of link `{}`", g.link_name(c.index));
+      case Column::SlideV: return fmt::format("the sliding velocity of joint `{}`", g.joint(c.index).name);
+      case Column::SlideA: return fmt::format("the sliding acceleration of joint `{}`", g.joint(c.index).name);
+    }
+    return "";
+  }
 
   Column classify(const std::string& name, int line, size_t col) const {
-    if (name == "sample") return {Column::Label, 0, name};
-    if (name == "t" || name == "input_angle") return {Column::Carried, 0, name};
+    const std::string here = fmt::format("line {}, column {} ({})", line, col + 1, yaml_io::backticked(name));
+    if (const auto it = allowed_.find(name); it != allowed_.end()) {
+      if (it->second.size() > 1)
+        fail(here, fmt::format("ambiguous column: in this scene it is both {} and {}; rename a joint or link",
+                               meaning(it->second[0]), meaning(it->second[1])));
+      return it->second.front();
+    }
     const Linkage& g = scene_.linkage;
     const auto dot = name.find('.');
     const std::string head = dot == std::string::npos ? "" : name.substr(0, dot);
-    const std::string tail = dot == std::string::npos ? "" : name.substr(dot + 1);
-    const std::string here = fmt::format("line {}, column {} (`{}`)", line, col + 1, name);
-    if (head == "omega" || head == "alpha") {
-      const auto l = g.find_link(tail);
-      if (!l) fail(here, fmt::format("unknown link `{}`: the scene's links are {}", tail, fmt::join(g.link_names(), ", ")));
-      if (*l == g.ground()) fail(here, "the ground link has no rates to record");
-      return {head == "omega" ? Column::Omega : Column::Alpha, *l, name};
-    }
-    if (head == "v" || head == "a") {
-      const auto j = g.find_joint(tail);
-      if (!j || g.joint(*j).type != JointType::Prismatic) fail(here, fmt::format("`{}` is not a prismatic joint of the scene", tail));
-      return {head == "v" ? Column::SlideV : Column::SlideA, *j, name};
-    }
-    const auto pdot = name.rfind('.');
-    if (pdot != std::string::npos) {
-      const std::string joint = name.substr(0, pdot), axis = name.substr(pdot + 1);
-      if (const auto j = g.find_joint(joint); j && (axis == "x" || axis == "y"))
-        return {axis == "x" ? Column::X : Column::Y, *j, name};
-    }
+    const std::string tail = yaml_io::shorten(dot == std::string::npos ? "" : name.substr(dot + 1), yaml_io::kMaxQuoted);
+    if ((head == "omega" || head == "alpha") && tail == g.link_name(g.ground()))
+      fail(here, "the ground link has no rates to record");
+    if (head == "omega" || head == "alpha")
+      fail(here, fmt::format("unknown link `{}`: the scene's links are {}", tail, fmt::join(g.link_names(), ", ")));
+    if (head == "v" || head == "a") fail(here, fmt::format("`{}` is not a prismatic joint of the scene", tail));
     fail(here, "unknown column: expected sample, t, input_angle, <joint>.x, <joint>.y, omega.<link>, alpha.<link>, "
-               "v.<joint> or a.<joint>");
+               "v.<joint> or a.<joint> with the scene's names");
   }
 
   void read_header(const std::vector<std::string>& names, int line) {
+    if (names.size() > kMaxCsvColumns)
+      fail(fmt::format("line {} (header)", line),
+           fmt::format("{} columns; the limit is {} (docs/limits.md)", names.size(), kMaxCsvColumns));
     std::map<std::string, size_t> seen;
     for (size_t c = 0; c < names.size(); ++c) {
       if (names[c].empty()) fail(fmt::format("line {}, column {}", line, c + 1), "empty column name");
       if (auto it = seen.find(names[c]); it != seen.end())
-        fail(fmt::format("line {}, column {} (`{}`)", line, c + 1, names[c]),
+        fail(fmt::format("line {}, column {} ({})", line, c + 1, yaml_io::backticked(names[c])),
              fmt::format("duplicate column (also column {})", it->second + 1));
       seen[names[c]] = c;
       columns_.push_back(classify(names[c], line, c));
@@ -151,10 +192,14 @@ class DataReader {
     }
     bool user = false;
     for (const auto& c : columns_)
-      if ((c.kind == Column::Omega || c.kind == Column::Alpha) && !is_input_link(c.index)) user = true;
+      if ((c.kind == Column::Omega || c.kind == Column::Alpha) ? !is_input_link(c.index)
+          : (c.kind == Column::SlideV || c.kind == Column::SlideA) ? !is_input_joint(c.index)
+                                                                  : false)
+        user = true;
     if (!user)
       fail(fmt::format("line {} (header)", line),
-           "no column to check: add alpha.<link> (or omega.<link>) for a link that is not an input");
+           "no column to check: add alpha.<link> (or omega.<link>) for a link that is not an input, or v.<joint> / "
+           "a.<joint> for a prismatic joint that is not an input");
   }
 
   RecordedNumber number(const std::string& cell, int line, size_t col) const {
@@ -163,9 +208,22 @@ class DataReader {
     try {
       q = parse_rational(cell);
     } catch (const std::exception& e) {
-      fail(where(line, col), fmt::format("`{}` is not a number: {}", yaml_io::shorten(cell, yaml_io::kMaxQuoted), e.what()));
+      // parse_rational's message quotes the whole text: keep only its reason, quote the cell cut.
+      const std::string what = e.what(), quoted = "'" + cell + "'";
+      const std::string reason = what.rfind(quoted, 0) == 0 ? what.substr(quoted.size()) : " is not an exact number";
+      fail(where(line, col), yaml_io::backticked(cell) + reason);
     }
+    // Tolerances are computed in double: a number beyond its range would be an infinity there.
+    if (cln::abs(q) > max_magnitude())
+      fail(where(line, col), fmt::format("{} is beyond the range of binary64 (|x| <= 1.797e308): recorded "
+                                         "data is compared with tolerances computed in double",
+                                         yaml_io::backticked(cell)));
     return {q, decimal_uncertainty(cell, q), cell};
+  }
+
+  static const Rational& max_magnitude() {
+    static const Rational m = ScalarTraits<double>::to_rational(std::numeric_limits<double>::max());
+    return m;
   }
 
   MotionSample read_row(const std::vector<std::string>& cells, int line) {
@@ -181,13 +239,19 @@ class DataReader {
     s.rate_dot = s.rate;
     s.user_omega.resize(static_cast<size_t>(g.link_count()));
     s.user_alpha = s.user_omega;
+    s.user_slide.resize(static_cast<size_t>(g.joint_count()));
+    s.user_slide_dot = s.user_slide;
+    for (size_t c = 0; c < cells.size(); ++c)
+      if (cells[c].size() > kMaxCsvCellBytes)
+        fail(where(line, c), fmt::format("a cell of {} bytes; the limit is {} (docs/limits.md)", cells[c].size(),
+                                         kMaxCsvCellBytes));
     for (size_t c = 0; c < cells.size(); ++c) {
       const Column& col = columns_[c];
       switch (col.kind) {
         case Column::Label:
-          if (!cells[c].empty()) s.label = cells[c];
+          if (!cells[c].empty()) s.label = yaml_io::clean_text(cells[c]);
           break;
-        case Column::Carried: (col.name == "t" ? s.t : s.input_angle) = cells[c]; break;
+        case Column::Carried: (col.name == "t" ? s.t : s.input_angle) = yaml_io::clean_text(cells[c]); break;
         case Column::X: s.x[static_cast<size_t>(col.index)] = number(cells[c], line, c); break;
         case Column::Y: s.y[static_cast<size_t>(col.index)] = number(cells[c], line, c); break;
         default: read_rate(s, col, cells[c], line, c);
@@ -214,11 +278,20 @@ class DataReader {
       return;
     }
     if (cell.empty()) return;  // not recorded
-    (col.kind == Column::Omega ? s.user_omega : s.user_alpha)[static_cast<size_t>(col.index)] = number(cell, line, c);
+    // A link's rates are indexed by link, a slider's by joint: never one by the other.
+    const size_t i = static_cast<size_t>(col.index);
+    switch (col.kind) {
+      case Column::Omega: s.user_omega.at(i) = number(cell, line, c); break;
+      case Column::Alpha: s.user_alpha.at(i) = number(cell, line, c); break;
+      case Column::SlideV: s.user_slide.at(i) = number(cell, line, c); break;
+      case Column::SlideA: s.user_slide_dot.at(i) = number(cell, line, c); break;
+      default: throw InternalError("read_rate: not a rate column");
+    }
   }
 
   std::string source_;
   const MechanismScene& scene_;
+  std::map<std::string, std::vector<Column>> allowed_;
   std::vector<Column> columns_;
 };
 
@@ -244,7 +317,7 @@ double decimal_uncertainty(std::string_view text, const Rational& value, double 
   return digits_rule(significant, exponent - decimals, value, scale);
 }
 
-double rational_uncertainty(const Rational& value, double scale) {
+double scene_coordinate_uncertainty(const Rational& value, double scale) {
   const cln::cl_I den = cln::denominator(value);
   if (den == 1) return 0;
   cln::cl_I d = den;
@@ -256,7 +329,8 @@ double rational_uncertainty(const Rational& value, double scale) {
   const cln::cl_I scaled = cln::abs(cln::numerator(value * cln::expt(Rational(10), k)));
   std::ostringstream text;
   text << scaled;
-  return digits_rule(static_cast<long>(text.str().size()), -k, value, scale);
+  if (text.str().size() < 16) return 0;  // "0.5", "117.349", "1/2": exact as written
+  return one_ulp(std::max(std::abs(ScalarTraits<double>::from_rational(value)), scale));
 }
 
 MotionData parse_motion_data(const std::string& csv_text, const std::string& source, const MechanismScene& scene) {

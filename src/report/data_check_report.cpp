@@ -9,9 +9,41 @@ namespace linkproof {
 
 namespace {
 
-std::string verdict_of(const SampleCheck& s) {
-  if (!s.error.empty()) return "unsolvable";
-  return s.agrees() ? "agrees" : "differs";
+// The JSON contract's spellings (docs/testing.md).
+const char* to_word(SampleVerdict v) {
+  switch (v) {
+    case SampleVerdict::Agrees: return "agrees";
+    case SampleVerdict::Differs: return "differs";
+    case SampleVerdict::Inconclusive: return "inconclusive";
+    case SampleVerdict::NothingCompared: return "nothing compared";
+    case SampleVerdict::Unsolvable: return "unsolvable";
+  }
+  return "";
+}
+
+const char* to_word(RateOutcome o) {
+  switch (o) {
+    case RateOutcome::Agrees: return "agrees";
+    case RateOutcome::Differs: return "differs";
+    case RateOutcome::Inconclusive: return "inconclusive";
+  }
+  return "";
+}
+
+/// The CSV column's prefix: omega, alpha, v, a.
+const char* to_word(RecordedQuantity q) {
+  switch (q) {
+    case RecordedQuantity::Omega: return "omega";
+    case RecordedQuantity::Alpha: return "alpha";
+    case RecordedQuantity::SlideVelocity: return "v";
+    case RecordedQuantity::SlideAcceleration: return "a";
+  }
+  return "";
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+  return s;
 }
 
 }  // namespace
@@ -26,14 +58,21 @@ nlohmann::json to_json(const DataCheck& check) {
                                     {"alpha_decimal", format_decimal(s.alpha[l])}};
     nlohmann::json checks = nlohmann::json::array();
     for (const auto& c : s.checks)
-      checks.push_back({{"link", c.link}, {"quantity", c.quantity}, {"exact", format_decimal(c.exact)},
-                        {"user", c.user_text}, {"difference", c.difference}, {"tolerance", c.tolerance},
-                        {"verdict", c.agrees ? "agrees" : "differs"}});
+      checks.push_back({{c.is_slide() ? "joint" : "link", c.name},
+                        {"quantity", to_word(c.quantity)},
+                        {"exact", format_decimal(c.exact)},
+                        {"exact_rational", format_rational(c.exact)},
+                        {"user", c.user_text},
+                        {"difference", c.difference},
+                        {"tolerance", c.tolerance},
+                        {"outcome", to_word(c.outcome)},
+                        {"agrees", c.agrees()},
+                        {"verdict", to_word(c.outcome)}});
     nlohmann::json j = {{"line", s.line},
                         {"sample", s.label},
                         {"t", s.t},
                         {"input_angle", s.input_angle},
-                        {"verdict", verdict_of(s)},
+                        {"verdict", to_word(s.verdict())},
                         {"consistent", s.consistent},
                         {"closure", {{"residual", s.closure_residual}, {"tolerance", s.closure_tolerance}, {"worst", s.closure_worst}}},
                         {"exact", exact},
@@ -50,24 +89,32 @@ nlohmann::json to_json(const DataCheck& check) {
            {{"samples", check.samples.size()},
             {"agreeing", check.agreeing},
             {"differing", check.differing},
+            {"inconclusive", check.inconclusive},
+            {"nothing_compared", check.nothing_compared},
             {"inconsistent", check.inconsistent},
-            {"unsolvable", check.unsolvable}}},
+            {"unsolvable", check.unsolvable},
+            {"values_compared", check.compared}}},
           {"exit_status", exit_status(check)}};
 }
 
 void write_text(std::ostream& out, const DataCheck& check) {
   fmt::print(out, "check-data: {} against {}\n", check.data, check.scene);
-  fmt::print(out, "{} samples: {} agree, {} differ, {} inconsistent positions, {} unsolvable\n\n", check.samples.size(),
-             check.agreeing, check.differing, check.inconsistent, check.unsolvable);
+  fmt::print(out, "{} samples: {} agree, {} differ, {} inconclusive, {} nothing compared, {} inconsistent positions, {} "
+                  "unsolvable ({} values compared)\n",
+             check.samples.size(), check.agreeing, check.differing, check.inconclusive, check.nothing_compared,
+             check.inconsistent, check.unsolvable, check.compared);
+  if (check.compared == 0) fmt::print(out, "nothing compared in the whole file: not a pass\n");
+  fmt::print(out, "\n");
   for (const SampleCheck& s : check.samples) {
     fmt::print(out, "{} (line {}{}): {}{}\n", s.label, s.line, s.input_angle.empty() ? "" : ", input " + s.input_angle,
-               verdict_of(s), s.consistent ? "" : " -- INCONSISTENT positions");
+               to_word(s.verdict()), s.consistent ? "" : " -- INCONSISTENT positions");
     fmt::print(out, "  closure: worst {} off by {:.3g} (tolerance {:.3g})\n", s.closure_worst, s.closure_residual,
                s.closure_tolerance);
     if (!s.error.empty()) fmt::print(out, "  error: {}\n", s.error);
     for (const auto& c : s.checks)
-      fmt::print(out, "  {:<6} {:<8} exact {:>30}  user {:>22}  diff {:>10.3e}  tol {:>9.2e}  {}\n", c.quantity, c.link,
-                 format_decimal(c.exact), c.user_text, c.difference, c.tolerance, c.agrees ? "agrees" : "DIFFERS");
+      fmt::print(out, "  {:<6} {:<8} exact {:>30}  user {:>22}  diff {:>10.3e}  tol {:>9.2e}  {}\n", to_word(c.quantity),
+                 c.name, format_decimal(c.exact), c.user_text, c.difference, c.tolerance,
+                 c.outcome == RateOutcome::Agrees ? std::string("agrees") : upper(to_word(c.outcome)));
   }
   fmt::print(out, "\ntolerance: {}\n", check.tolerance_rule);
 }

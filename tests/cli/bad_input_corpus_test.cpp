@@ -11,6 +11,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/report_checks.h"
@@ -69,6 +70,38 @@ std::vector<std::string> resume_of_edited_sweep(const std::string& name,
   std::vector<std::string> resume = sweep;
   resume.insert(resume.end(), {"--resume", "--json"});
   return resume;
+// check-data (issue 24): a four-bar scene with plain names, a CSV row of it, and the Watt I
+// row matlab_0000 mirrored (every x negated).
+const std::string kCheckDataHeader = "sample,O2.x,O2.y,A.x,A.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank,alpha.coupler\n";
+std::string check_data_fourbar(const std::string& a) {
+  return "name: fourbar\nmechanism:\n  ground: g\n  joints:\n"
+         "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+         "    - {name: A, type: revolute, links: [crank, coupler], at: " + a + "}\n"
+         "    - {name: B, type: revolute, links: [coupler, rocker], at: [11, 10]}\n"
+         "    - {name: O4, type: revolute, links: [rocker, g], at: [11, 0]}\n"
+         "  inputs:\n    - {link: crank, omega: 2, omega_dot: 5}\n";
+}
+std::string mirrored_watt_row() {
+  std::ifstream in(source_file("verify/data/pmks_watt_i_matlab.csv"));
+  std::string line, out;
+  std::vector<std::string> header;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    if (header.empty()) {
+      header = cells;
+      out += line + "\n";
+      continue;
+    }
+    for (size_t k = 0; k < cells.size(); ++k) {
+      const bool x = header[k].size() > 2 && header[k].compare(header[k].size() - 2, 2, ".x") == 0;
+      out += (k ? "," : "") + (x ? (cells[k][0] == '-' ? cells[k].substr(1) : "-" + cells[k]) : cells[k]);
+    }
+    return out + "\n";
+  }
+  return out;
 }
 
 struct Case {
@@ -370,6 +403,101 @@ const std::vector<Case>& corpus() {
        2, "/dev/null: --out: is not a regular file", "", ""},
       {"SweepNAboveTheLimit", [] { return std::vector<std::string>{"sweep", "--n", "599", "--count", "1"}; }, 2, "<= 200", "", ""},
       {"SweepNOfAMillion", [] { return std::vector<std::string>{"sweep", "--n", "4..1000000", "--count", "1"}; }, 2, "<= 200", "", ""},
+      // --- check-data (issue 24): false passes, a crash, unreadable messages
+      {"CheckDataSlideAccelerationOfAJointBeyondTheLinkCountIsCompared",
+       [] {
+         return std::vector<std::string>{
+             "check-data", source_file("verify/scenes/mechanisms/seed003_class3.yaml"),
+             write_temp("cd_slider.csv",
+                        "sample,O1.x,O1.y,A.x,A.y,B.x,B.y,C.x,C.y,D.x,D.y,K.x,K.y,O2.x,O2.y,E.x,E.y,M.x,M.y,H.x,H.y,"
+                        "omega.1,alpha.1,alpha.2,a.H\ns,0,0,2.005,-24.919,59.410,-42.375,117.349,-26.785,117.349,-26.785,"
+                        "101.468,31.075,157.223,53.243,50.583,-9.368,68.199,47.987,68.199,47.987,100,0,0,0\n")};
+       },
+       1, "", "a      H", ""},
+      {"CheckDataAlpha2e309IsRefused",
+       [] {
+         return std::vector<std::string>{"check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+                                         write_temp("cd_inf.csv", kCheckDataHeader + "s,0,0,3,4,11,10,11,0,2,5,2e309\n")};
+       },
+       2, "column 12 (`alpha.coupler`): `2e309` is beyond the range of binary64", "", ""},
+      {"CheckDataPositions1e200AreInconsistent",
+       [] {
+         return std::vector<std::string>{"check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+                                         write_temp("cd_1e200.csv", kCheckDataHeader + "s,0,0,3,4,1e200,10,11,0,2,5,1000\n")};
+       },
+       1, "", "INCONSISTENT", " agrees\n"},
+      {"CheckDataSceneFractionIsExact",
+       [] {
+         return std::vector<std::string>{
+             "check-data", write_temp("cd_frac.yaml", check_data_fourbar("[\"3/10\", \"2/5\"]")),
+             write_temp("cd_frac.csv", kCheckDataHeader + "s,0,0,33/100,11/25,11,10,11,0,2,5,1\n")};
+       },
+       1, "", "INCONSISTENT", ""},
+      {"CheckDataToleranceBeyondTheExactValueIsInconclusive",
+       [] {
+         return std::vector<std::string>{
+             "check-data",
+             write_temp("cd_toggle.yaml",
+                        "name: toggle\nmechanism:\n  ground: g\n  joints:\n"
+                        "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+                        "    - {name: A, type: revolute, links: [crank, coupler], at: [0, 1]}\n"
+                        "    - {name: B, type: revolute, links: [coupler, rocker], at: [1.5, 0.51]}\n"
+                        "    - {name: O4, type: revolute, links: [rocker, g], at: [3, 0]}\n"
+                        "  inputs:\n    - {link: crank, omega: 2, omega_dot: 5}\n"),
+             write_temp("cd_toggle.csv", kCheckDataHeader + "s,0.00,0.00,0.00,1.00,1.50,0.51,3.00,0.00,2,5,7\n")};
+       },
+       1, "", "INCONCLUSIVE", " agrees\n"},
+      {"CheckDataMirroredTernaryLinkIsInconsistent",
+       [] {
+         return std::vector<std::string>{"check-data", source_file("verify/scenes/mechanisms/pmks_watt_i_0.yaml"),
+                                         write_temp("cd_mirror.csv", mirrored_watt_row())};
+       },
+       1, "", "worst orientation of", ""},
+      {"CheckDataNothingComparedIsNotAPass",
+       [] {
+         return std::vector<std::string>{"check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+                                         write_temp("cd_empty.csv", kCheckDataHeader + "s,0,0,3,4,11,10,11,0,2,5,\n")};
+       },
+       1, "", "nothing compared in the whole file", ""},
+      {"CheckDataJointNamedLikeAPrefix",
+       [] {
+         std::string scene = check_data_fourbar("[3, 4]");
+         const std::vector<std::pair<std::string, std::string>> renames = {{"name: O2,", "name: a,"},
+                                                                             {"name: A,", "name: omega,"}};
+         for (const auto& [from, to] : renames) scene.replace(scene.find(from), from.size(), to);
+         return std::vector<std::string>{
+             "check-data", write_temp("cd_names.yaml", scene),
+             write_temp("cd_names.csv", "a.x,a.y,omega.x,omega.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank,alpha.coupler\n"
+                                        "0,0,3,4,11,10,11,0,2,5,1\n")};
+       },
+       1, "", "alpha  coupler", ""},
+      {"CheckDataMegabyteCellIsCut",
+       [] {
+         return std::vector<std::string>{
+             "check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+             write_temp("cd_mega.csv", kCheckDataHeader + "s,0,0,3,4,11,10,11,0,2,5," + std::string(1 << 20, '1') + "\n")};
+       },
+       2, "a cell of 1048576 bytes; the limit is 4096", "", ""},
+      {"CheckDataExponent5000IsRefused",
+       [] {
+         return std::vector<std::string>{"check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+                                         write_temp("cd_e5000.csv", kCheckDataHeader + "s,0,0,3,4,11,10,11,0,2,5,1e5000\n")};
+       },
+       2, "column 12 (`alpha.coupler`): `1e5000` is not an exact number (exponent out of range", "", ""},
+      {"CheckDataControlCharactersInALabelAreEscaped",
+       [] {
+         return std::vector<std::string>{"check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+                                         write_temp("cd_esc.csv", kCheckDataHeader + "\x1b]0;owned\x07,0,0,3,4,11,10,11,0,2,5,1\n")};
+       },
+       1, "", "\\x1b]0;owned\\x07 (line 2)", "\x1b"},
+      {"CheckDataTooManyColumns",
+       [] {
+         std::string header = "sample";
+         for (int k = 0; k < 20001; ++k) header += ",c" + std::to_string(k);
+         return std::vector<std::string>{"check-data", write_temp("cd_fourbar.yaml", check_data_fourbar("[3, 4]")),
+                                         write_temp("cd_columns.csv", header + "\n")};
+       },
+       2, "20002 columns; the limit is 20000", "", ""},
   };
   return cases;
 }

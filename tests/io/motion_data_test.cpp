@@ -44,9 +44,17 @@ TEST(MotionData, DigitsGiveTheUncertaintyOfEachNumber) {
   EXPECT_DOUBLE_EQ(decimal_uncertainty("-2.7200000000000002", parse_rational("-2.7200000000000002")), std::ldexp(1.0, -51));
   // ... or one ulp of the row's scale when that is larger (2^-47 at 60).
   EXPECT_DOUBLE_EQ(decimal_uncertainty("-2.7200000000000002", parse_rational("-2.7200000000000002"), 60), std::ldexp(1.0, -47));
-  EXPECT_EQ(rational_uncertainty(Rational(12)), 0);
-  EXPECT_EQ(rational_uncertainty(Rational(1) / 3), 0);
-  EXPECT_DOUBLE_EQ(rational_uncertainty(parse_rational("117.349")), 0.0005);
+}
+
+// A scene is a definition, not a measurement: its coordinates are exact, except a value of 16+
+// significant digits (a printed double), uncertain by one ulp at the scene's scale.
+TEST(MotionData, SceneCoordinatesAreExactUnlessPrintedDoubles) {
+  EXPECT_EQ(scene_coordinate_uncertainty(Rational(12)), 0);
+  EXPECT_EQ(scene_coordinate_uncertainty(Rational(1) / 3), 0);
+  EXPECT_EQ(scene_coordinate_uncertainty(Rational(1) / 2), 0);
+  EXPECT_EQ(scene_coordinate_uncertainty(parse_rational("117.349")), 0);
+  EXPECT_DOUBLE_EQ(scene_coordinate_uncertainty(parse_rational("-2.7200000000000002")), std::ldexp(1.0, -51));
+  EXPECT_DOUBLE_EQ(scene_coordinate_uncertainty(parse_rational("-2.7200000000000002"), 60), std::ldexp(1.0, -47));
 }
 
 TEST(MotionData, ReadsRowsExactlyAndLeavesEmptyUserCellsUnrecorded) {
@@ -76,6 +84,35 @@ TEST(MotionData, ErrorsNameTheLineColumnAndProblem) {
             std::string::npos);
   EXPECT_NE(error_of(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,nan,1\n").find("column 12 (`alpha.coupler`)"),
             std::string::npos);
+  EXPECT_NE(error_of(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,-7e400,1\n").find("beyond the range of binary64"),
+            std::string::npos);
+  EXPECT_NE(error_of("sample,alpha.g\n").find("the ground link has no rates"), std::string::npos);
+  EXPECT_NE(error_of("sample,alpha.nolink\n").find("unknown link `nolink`"), std::string::npos);
+}
+
+// Columns are matched whole against the scene's names: a name with two meanings in one scene is
+// refused, naming both, instead of being read as one of them.
+TEST(MotionData, AColumnNameWithTwoMeaningsInTheSceneIsRefusedNamingBoth) {
+  const MechanismScene slider = parse_mechanism_scene(R"(name: slider
+mechanism:
+  ground: g
+  joints:
+    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}
+    - {name: v, type: revolute, links: [crank, coupler], at: [3, 4]}
+    - {name: B, type: revolute, links: [coupler, slider], at: [11, 0]}
+    - {name: x, type: prismatic, links: [g, slider], at: [11, 0], axis: [1, 0]}
+  inputs:
+    - {link: crank, omega: 2, omega_dot: 5}
+)", "slider.yaml");
+  std::string error = "no error";
+  try {
+    parse_motion_data("sample,v.x,v.y\n", "data.csv", slider);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("column 2 (`v.x`): ambiguous column"), std::string::npos) << error;
+  EXPECT_NE(error.find("the x of joint `v`"), std::string::npos) << error;
+  EXPECT_NE(error.find("the sliding velocity of joint `x`"), std::string::npos) << error;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "linkproof/io/mechanism_scene.h"
@@ -79,10 +80,10 @@ TEST(DataCheck, PmksOldAnalyserDiffersExactlyWhereItsValuesAreFarFromTheTruth) {
       const auto& cfg = configuration(json, c.name, s.label);
       for (const auto& chk : s.checks) {
         // Independent reading: the JSON's 25-digit alpha_exact against the printed PMKS value.
-        const double exact = std::stod(cfg["alpha_exact"][chk.link].get<std::string>());
-        const double pmks = cfg["alpha_pmks_upstream_model"][chk.link].get<double>();
-        EXPECT_EQ(chk.agrees, std::abs(pmks - exact) <= 5e-7) << s.label << " " << chk.link << " " << pmks << " vs " << exact;
-        differing += chk.agrees ? 0 : 1;
+        const double exact = std::stod(cfg["alpha_exact"][chk.name].get<std::string>());
+        const double pmks = cfg["alpha_pmks_upstream_model"][chk.name].get<double>();
+        EXPECT_EQ(chk.agrees(), std::abs(pmks - exact) <= 5e-7) << s.label << " " << chk.name << " " << pmks << " vs " << exact;
+        differing += chk.agrees() ? 0 : 1;
       }
     }
     EXPECT_EQ(exit_status(r), 1);
@@ -119,6 +120,47 @@ TEST(DataCheck, FlagsPositionsThatDoNotCloseTheLoopsAndAValueOffBy1e9) {
   }
   EXPECT_EQ(inconsistent, 1);
   EXPECT_EQ(r.inconsistent, 1);
+}
+
+// The outcome rule, decided exactly: a finite tolerance below |exact| decides agreement; one that
+// reaches |exact| (or is not finite) cannot, whatever the user's value.
+TEST(DataCheck, CompareRecordedIsExactAndNeverAgreesWithoutAFiniteToleranceBelowTheExactValue) {
+  const Rational exact = Rational(3109) / 800;
+  EXPECT_EQ(compare_recorded(exact, exact, 0), RateOutcome::Agrees);
+  EXPECT_EQ(compare_recorded(exact + Rational(1) / 1000, exact, 0.0011), RateOutcome::Agrees);
+  EXPECT_EQ(compare_recorded(exact + Rational(1) / 1000, exact, 0.0009), RateOutcome::Differs);
+  // 1e-400 off with tolerance 0: differs, although the double difference rounds to 0.
+  EXPECT_EQ(compare_recorded(exact + parse_rational("1e-400"), exact, 0), RateOutcome::Differs);
+  for (const double t : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    EXPECT_EQ(compare_recorded(exact, exact, t), RateOutcome::Inconclusive) << t;
+    EXPECT_EQ(compare_recorded(parse_rational("2e309"), exact, t), RateOutcome::Inconclusive) << t;
+  }
+  EXPECT_EQ(compare_recorded(parse_rational("2e309"), exact, 1e308), RateOutcome::Differs);
+  // Near a toggle: exact -5e17, recorded 7, tolerance 3.5e18.
+  EXPECT_EQ(compare_recorded(Rational(7), Rational(-500000000000000000), 3.5e18), RateOutcome::Inconclusive);
+  EXPECT_EQ(compare_recorded(Rational(0), Rational(0), 1e-15), RateOutcome::Inconclusive);
+}
+
+TEST(DataCheck, SampleVerdictOrdersDiffersThenInconclusiveAndNeedsAComparedValue) {
+  SampleCheck s;
+  EXPECT_EQ(s.verdict(), SampleVerdict::NothingCompared);
+  EXPECT_FALSE(s.agrees());
+  RecordedRateCheck c;
+  c.outcome = RateOutcome::Agrees;
+  s.checks.push_back(c);
+  EXPECT_EQ(s.verdict(), SampleVerdict::Agrees);
+  c.outcome = RateOutcome::Inconclusive;
+  s.checks.push_back(c);
+  EXPECT_EQ(s.verdict(), SampleVerdict::Inconclusive);
+  c.outcome = RateOutcome::Differs;
+  s.checks.push_back(c);
+  EXPECT_EQ(s.verdict(), SampleVerdict::Differs);
+  s.error = "locked";
+  EXPECT_EQ(s.verdict(), SampleVerdict::Unsolvable);
+  DataCheck none;
+  none.samples.push_back(SampleCheck{});
+  none.nothing_compared = 1;
+  EXPECT_EQ(exit_status(none), 1);
 }
 
 }  // namespace
