@@ -31,6 +31,10 @@ struct CheckArgs {
 // A mechanism scene (top-level `mechanism:`): the mechanism engine and the scene's catalogues.
 int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostream& out) {
   const MechanismScene scene = parse_mechanism_scene(text, a.scene);
+  // An option that does not apply is refused, never ignored: a mechanism's report has no term tables.
+  if (a.no_terms)
+    throw InputError("<command line>", "--no-terms",
+                     "applies to polygon scenes only (a mechanism check prints no term-by-term tables): " + a.scene);
   MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), chosen_arithmetic(a.arith, scene.ask));
   check.strict = a.strict;
   // With an ask, only what it names (the second-order work is the `curvature` command's then).
@@ -84,8 +88,8 @@ void add_check_command(CLI::App& app, Action& action) {
                 "arithmetic: exact (default: CLN rationals, a residual is 0 or not), or floating point with a "
                 "running error bound that draws the tolerance: double, long-double, mp30, mp50, mp100, mp1000 "
                 "(CLN long floats of 128, 192, 384, 3392 bits); default: the scene's `ask: [arithmetic: ...]`, else exact");
-  c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
-  c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
+  c->add_flag("--json", a.json, "print JSON (the contract: docs/check.md, docs/mechanisms.md)");
+  c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report (polygon scenes; refused on a mechanism scene)");
   c->add_flag("--strict", a.strict,
               "undefined or inconclusive on a true claim is not as expected (exit 1): for CI");
 }

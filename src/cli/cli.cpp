@@ -7,6 +7,7 @@
 #include <new>
 
 #include "budget_watchdog.h"
+#include "build_info.h"
 #include "command.h"
 #include "error_report.h"
 #include "linkproof/core/error.h"
@@ -43,7 +44,7 @@ std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out
                          Resources& resources, bool json) {
   CLI::App app{"linkproof: checks published kinematics formulas of planar linkages against the exact truth"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "linkproof 0.1.0");
+  app.set_version_flag("--version", "linkproof " LINKPROOF_VERSION);
   // The resource options belong to every subcommand: declared once here, and found after the
   // subcommand's name too (fallthrough, inherited by the subcommands declared below).
   app.fallthrough();
@@ -82,7 +83,7 @@ std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out
     out << app.help();
     return checked_output(out, err, kAsExpected);
   } catch (const CLI::CallForVersion&) {
-    out << "linkproof 0.1.0\n";
+    out << "linkproof " LINKPROOF_VERSION "\n";  // the project version (CMakeLists.txt)
     return checked_output(out, err, kAsExpected);
   } catch (const CLI::ParseError& e) {
     const int status = print_error(out, err, command_line_error_report("", e.what()), json);

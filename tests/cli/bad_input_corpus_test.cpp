@@ -70,6 +70,8 @@ std::vector<std::string> resume_of_edited_sweep(const std::string& name,
   std::vector<std::string> resume = sweep;
   resume.insert(resume.end(), {"--resume", "--json"});
   return resume;
+}
+
 // check-data (issue 24): a four-bar scene with plain names, a CSV row of it, and the Watt I
 // row matlab_0000 mirrored (every x negated).
 const std::string kCheckDataHeader = "sample,O2.x,O2.y,A.x,A.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank,alpha.coupler\n";
@@ -375,6 +377,10 @@ const std::vector<Case>& corpus() {
          return std::vector<std::string>{"curvature", write_temp("chain100.yaml", scene)};
        },
        2, "accepts at most 200 links", "", ""},
+      // --- issue 25: an option that does not apply is refused, not ignored
+      {"NoTermsOnAMechanismSceneIsRefused",
+       [] { return std::vector<std::string>{"check", source_file("verify/scenes/mechanisms/seed001_fourbar.yaml"), "--no-terms"}; },
+       2, "--no-terms: applies to polygon scenes only", "", ""},
       // --- issue 24: sweeps, result files, merge
       {"ResumeOfAResultFileWithAnEditedVerdict",  // was carried into the summary (exit 0)
        [] { return resume_of_edited_sweep("edited_verdict", [](nlohmann::json& j) { j["verdicts"].begin().value() = "inconclusive"; }); },

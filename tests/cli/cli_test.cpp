@@ -206,6 +206,20 @@ TEST(Cli, CheckStrictOnAMechanismSceneCountsAnUndefinedTrueClaim) {
   EXPECT_EQ(j["exit_status"], 1);
 }
 
+// The version was written into the CLI twice by hand; it is the project's (CMakeLists.txt).
+TEST(Cli, VersionIsTheProjectVersionOfCMakeLists) {
+  std::ifstream in(std::string(LINKPROOF_SOURCE_DIR) + "/CMakeLists.txt");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string key = "project(linkproof VERSION ";
+  const auto at = text.str().find(key);
+  ASSERT_NE(at, std::string::npos);
+  const std::string version = text.str().substr(at + key.size(), text.str().find(' ', at + key.size()) - at - key.size());
+  const CliRun r = run_cli({"--version"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, "linkproof " + version + "\n");
+}
+
 TEST(Cli, SweepRunsAndReplaysACaseBySeedAndIndex) {
   const CliRun all = run_cli({"sweep", "--n", "5..6", "--count", "4", "--seed", "3", "--json"});
   ASSERT_EQ(all.code, 0) << all.err;
