@@ -16,6 +16,7 @@
 
 #include "report/report_checks.h"
 #include "support/cli_run.h"
+#include "support/motion_csv.h"
 
 namespace linkproof {
 namespace {
@@ -85,25 +86,9 @@ std::string check_data_fourbar(const std::string& a) {
 }
 std::string mirrored_watt_row() {
   std::ifstream in(source_file("verify/data/pmks_watt_i_matlab.csv"));
-  std::string line, out;
-  std::vector<std::string> header;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
-    if (header.empty()) {
-      header = cells;
-      out += line + "\n";
-      continue;
-    }
-    for (size_t k = 0; k < cells.size(); ++k) {
-      const bool x = header[k].size() > 2 && header[k].compare(header[k].size() - 2, 2, ".x") == 0;
-      out += (k ? "," : "") + (x ? (cells[k][0] == '-' ? cells[k].substr(1) : "-" + cells[k]) : cells[k]);
-    }
-    return out + "\n";
-  }
-  return out;
+  std::stringstream text;
+  text << in.rdbuf();
+  return test::mirrored_first_row(text.str());
 }
 
 struct Case {

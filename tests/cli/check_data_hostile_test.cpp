@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/cli_run.h"
+#include "support/motion_csv.h"
 
 namespace linkproof {
 namespace {
@@ -174,27 +175,7 @@ TEST(CheckDataInconclusive, NearAToggleATolerancePastTheExactValueIsInconclusive
 
 TEST(CheckDataOrientation, AMirroredRecordingKeepsEveryDistanceButIsInconsistent) {
   // The Watt I row matlab_0000 with every x negated: all distances kept, every triangle reversed.
-  const std::string csv = read(source_file("verify/data/pmks_watt_i_matlab.csv"));
-  std::istringstream in(csv);
-  std::string line, out;
-  std::vector<std::string> header;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
-    if (header.empty()) {
-      header = cells;
-      out += line + "\n";
-      continue;
-    }
-    for (size_t k = 0; k < cells.size(); ++k)
-      if (header[k].size() > 2 && header[k].substr(header[k].size() - 2) == ".x")
-        cells[k] = cells[k][0] == '-' ? cells[k].substr(1) : "-" + cells[k];
-    for (size_t k = 0; k < cells.size(); ++k) out += (k ? "," : "") + cells[k];
-    out += "\n";
-    break;  // one row
-  }
+  const std::string out = test::mirrored_first_row(read(source_file("verify/data/pmks_watt_i_matlab.csv")));
   const auto r = run_cli({"check-data", source_file("verify/scenes/mechanisms/pmks_watt_i_0.yaml"),
                           write_temp("mirrored.csv", out), "--json"});
   EXPECT_EQ(r.code, 1) << r.out.substr(0, 2000) << r.err;
