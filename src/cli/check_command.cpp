@@ -84,7 +84,7 @@ void add_check_command(CLI::App& app, Action& action) {
                 "arithmetic: exact (default: CLN rationals, a residual is 0 or not), or floating point with a "
                 "running error bound that draws the tolerance: double, long-double, mp30, mp50, mp100, mp1000 "
                 "(CLN long floats of 128, 192, 384, 3392 bits); default: the scene's `ask: [arithmetic: ...]`, else exact");
-  c->add_flag("--json", a.json, "print JSON (the contract in README.md)");
+  c->add_flag("--json", a.json, "print JSON (the contract in docs/check.md)");
   c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report");
   c->add_flag("--strict", a.strict,
               "undefined or inconclusive on a true claim is not as expected (exit 1): for CI");
