@@ -70,6 +70,8 @@ std::vector<std::string> resume_of_edited_sweep(const std::string& name,
   std::vector<std::string> resume = sweep;
   resume.insert(resume.end(), {"--resume", "--json"});
   return resume;
+}
+
 // check-data (issue 24): a four-bar scene with plain names, a CSV row of it, and the Watt I
 // row matlab_0000 mirrored (every x negated).
 const std::string kCheckDataHeader = "sample,O2.x,O2.y,A.x,A.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank,alpha.coupler\n";
