@@ -4,7 +4,7 @@
 //                           beta_j per four-bar j: construct_four_bar_steps), in plain double:
 //                           the graphic method's cost;
 //   BM_Eq22ClosedFormsDouble  (22) with i, lambda from the closed forms: the formula alone;
-//   BM_ClosedFormMotion<T>  the ground truth by the closed forms of SPEC A2;
+//   BM_ClosedFormMotion<T>  the ground truth by the closed forms of conventions §A2;
 //   BM_TapeMotion<T>        the ground truth by the compiled symbolic tape (route d).
 // Counter per_side = time / (n-3 inputs), in seconds (the table prints 21.3n for 21.3 ns).
 #include <benchmark/benchmark.h>
@@ -19,7 +19,7 @@
 namespace linkproof::bench {
 namespace {
 
-/// S = sum_{j != l} a_j a_l over ordered pairs (SPEC A3), in O(n).
+/// S = sum_{j != l} a_j a_l over ordered pairs (conventions §A3), in O(n).
 template <class T>
 struct PairSum {
   T sum{}, squares{};

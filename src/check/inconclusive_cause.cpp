@@ -82,13 +82,13 @@ std::string InconclusiveCause::describe() const {
     case Kind::DeadCentre:
       return fmt::format(
           "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): near the dead centre every route "
-          "divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, SPEC A6), so no floating-point route is better; exact "
+          "divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, docs/conventions.md §A6), so no floating-point route is better; exact "
           "arithmetic (--arith exact) or a longer precision (--arith mp1000) decides",
           quantity, relative_bound);
     case Kind::Construction:
       return fmt::format(
           "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): the construction loses digits near "
-          "its pole (SPEC A6) while the closed forms and the engine keep full accuracy; exact arithmetic "
+          "its pole (docs/conventions.md §A6) while the closed forms and the engine keep full accuracy; exact arithmetic "
           "(--arith exact) decides",
           quantity, relative_bound);
     case Kind::OwnArithmetic:

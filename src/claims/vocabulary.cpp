@@ -7,7 +7,7 @@ namespace linkproof {
 const std::vector<Word>& vocabulary() {
   using K = WordKind;
   static const std::vector<Word> words = {
-      // Ground truth (symbolic engine, SPEC A2), relative to the fixed side n.
+      // Ground truth (symbolic engine, conventions §A2), relative to the fixed side n.
       {"omega_out", K::GlobalScalar, 0, "omega_{n-1,n}: exact angular velocity of side n-1 (engine)"},
       {"omega_cpl", K::GlobalScalar, 0, "omega_{n-2,n}: exact angular velocity of side n-2 (engine)"},
       {"omega_dot_out", K::GlobalScalar, 0, "omega-dot_{n-1,n}: exact angular acceleration of side n-1 (engine)"},
@@ -18,7 +18,7 @@ const std::vector<Word>& vocabulary() {
       // Inputs.
       {"omega", K::InputScalar, 1, "omega[j] = omega_{j,n}, input angular velocity"},
       {"omega_dot", K::InputScalar, 1, "omega_dot[j] = omega-dot_{j,n}, input angular acceleration"},
-      // The paper's construction for four-bar j (SPEC A3), under the claim's reading.
+      // The paper's construction for four-bar j (conventions §A3), under the claim's reading.
       {"i_out", K::InputScalar, 1, "i_{n-1,j} = Q_jK'_j / Q_jK_n, directed (eq. 4)"},
       {"i_cpl", K::InputScalar, 1, "i_{n-2,j} = K_{n-2}K'_j / K_{n-2}P'_j, directed (eq. 6)"},
       {"cot_beta", K::InputScalar, 1, "cot beta_j, beta_j at Q_j from ray Q_jK_{n-1} to Q_jP'_j, > 0 iff ccw (eq. 9a)"},
@@ -28,7 +28,7 @@ const std::vector<Word>& vocabulary() {
       {"Kp", K::InputVector, 1, "K'_j = K_{n-2} - r_j (the displaced start of r_j)"},
       {"Q", K::InputVector, 1, "Q_j = line(K_{n-2},K_{n-1}) ^ line(K_n,K'_j)"},
       {"Pp", K::InputVector, 1, "P'_j = line(K_{n-1},K_n) ^ line(K'_j,K_{n-2})"},
-      // Closed forms (SPEC A3), independent of the construction.
+      // Closed forms (conventions §A3), independent of the construction.
       {"i_out_closed", K::InputScalar, 1, "(r_j x r_{n-2}) / D"},
       {"i_cpl_closed", K::InputScalar, 1, "(r_{n-1} x r_j) / D"},
       {"lambda_closed", K::InputScalar, 1, "-[r_{n-2}.r_j + i_{n-2,j}^2 |r_{n-2}|^2 + i_{n-1,j}^2 r_{n-2}.r_{n-1}] / D"},
@@ -40,7 +40,7 @@ const std::vector<Word>& vocabulary() {
       {"fourbar_omega_cpl", K::InputScalar, 1, "_j omega_{n-2,n}: coupler of four-bar j driven by omega_j (engine)"},
       {"fourbar_omega_dot_out", K::InputScalar, 1, "_j omega-dot_{n-1,n}: four-bar j driven by omega_j, omega-dot_j (engine)"},
       {"fourbar_omega_dot_cpl", K::InputScalar, 1, "_j omega-dot_{n-2,n} likewise"},
-      // The angle phi between r_{n-2} and r_{n-1} (SPEC A3), signed unless the claim reads it unsigned.
+      // The angle phi between r_{n-2} and r_{n-1} (conventions §A3), signed unless the claim reads it unsigned.
       {"D", K::GlobalScalar, 0, "D = r_{n-2} x r_{n-1} (0 at the dead centre)"},
       {"cot_phi", K::GlobalScalar, 0, "cot phi = r_{n-2}.r_{n-1} / D, phi signed ccw from r_{n-2} to r_{n-1}"},
       {"rho", K::GlobalScalar, 0, "r_{n-2} / (r_{n-1} sin phi) = |r_{n-2}|^2 / D"},

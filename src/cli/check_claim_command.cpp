@@ -143,7 +143,7 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
 }  // namespace
 
 void add_check_claim_command(CLI::App& app, Action& action) {
-  auto* c = app.add_subcommand("check-claim", "prove or disprove your own claims (a claim file, see README)");
+  auto* c = app.add_subcommand("check-claim", "prove or disprove your own claims (a claim file, see docs/claims.md)");
   auto& a = bind_action<CheckClaimArgs>(c, action, run_check_claim);
   c->add_option("file", a.file, "claim file (YAML)");
   c->add_option("--n", a.n_range, "sides: N (prove for this n) or A..B (default: every n, searching 4..8)");

@@ -48,10 +48,10 @@ int run_count(const CountArgs& a, std::ostream& out, std::ostream&) {
 }  // namespace
 
 void add_count_command(CLI::App& app, Action& action) {
-  auto* c = app.add_subcommand("count", "count relations between relative angular rates by exact rank (SPEC A7)");
+  auto* c = app.add_subcommand("count", "count relations between relative angular rates by exact rank (docs/conventions.md §A7)");
   auto& a = bind_action<CountArgs>(c, action, run_count);
   c->add_option("--n", a.n_range, "number of bodies / polygon sides, N or A..B with 3 <= A <= B <= 200");
-  c->add_flag("--eightbar", a.eightbar, "the eight-bar of Fig. 5 (geometry and input of SPEC A8)");
+  c->add_flag("--eightbar", a.eightbar, "the eight-bar of Fig. 5 (geometry and input of docs/conventions.md §A8)");
   c->add_option("--polygons", a.polygons,
                 "loops of links for --eightbar, last link fixed (default 1-2-3-4-0,1-5-7-4-0,1-5-6-3-2)");
   c->add_option("--seed", a.seed, "seed of the random polygons of the rank-2 claims (default 1)")

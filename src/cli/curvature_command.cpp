@@ -24,7 +24,7 @@ int run_curvature(const CurvatureArgs& a, std::ostream& out, std::ostream&) {
 }  // namespace
 
 void add_curvature_command(CLI::App& app, Action& action) {
-  auto* c = app.add_subcommand("curvature", "poles, curvature centres, Bobillier and joint-joining of a mechanism (SPEC D)");
+  auto* c = app.add_subcommand("curvature", "poles, curvature centres, Bobillier and joint-joining of a mechanism (docs/conventions.md §D)");
   auto& a = bind_action<CurvatureArgs>(c, action, run_curvature);
   c->add_option("scene", a.scene, "mechanism scene, e.g. verify/scenes/mechanisms/dijksman1984_eightbar.yaml")->required();
   c->add_flag("--json", a.json, "print JSON (docs/curvature.md)");

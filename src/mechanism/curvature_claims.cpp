@@ -62,11 +62,11 @@ MechanismClaim make(std::string id, std::string source, std::string statement, E
                         std::move(applies)};
 }
 
-const std::string kSeed = "Dijksman (1984), seed 004, SPEC.md D";
+const std::string kSource = "Dijksman (1984), docs/conventions.md §D";
 
 void add_pole_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<const CurvatureAnalysis>& a) {
   out.push_back(make(
-      "curvature.joint_poles", kSeed + ": poles",
+      "curvature.joint_poles", kSource + ": poles",
       "the pole P_ij of the two links of every revolute joint is the joint (v_i = v_j there)", Expectation::Holds,
       [a](const MechanismContext& c) {
         ClaimSides<Rational> s;
@@ -77,7 +77,7 @@ void add_pole_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<con
         return s;
       }));
   out.push_back(make(
-      "curvature.aronhold_kennedy", kSeed + ": Aronhold-Kennedy",
+      "curvature.aronhold_kennedy", kSource + ": Aronhold-Kennedy",
       "for every triple of links i < j < k the poles P_ij, P_jk, P_ik are collinear: det[P_ij; P_jk; P_ik] = 0 in "
       "homogeneous coordinates (a pole at infinity is its direction with w = 0)",
       Expectation::Holds, [a](const MechanismContext& c) {
@@ -102,7 +102,7 @@ void add_pole_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<con
 
 void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<const CurvatureAnalysis>& a) {
   out.push_back(make(
-      "curvature.bar_far_joint_is_centre", kSeed + ": a bar joins a point and its curvature centre",
+      "curvature.bar_far_joint_is_centre", kSource + ": a bar joins a point and its curvature centre",
       "for every bar (binary link) between links m and f, the far joint is the path curvature centre "
       "X + (|v|^2/(v x a)) J v of the near joint in the motion m/f (Coriolis included), from both ends",
       Expectation::Holds,
@@ -121,7 +121,7 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
       },
       [](const MechanismContext& c) { return !all_bars(c.scene.linkage).empty(); }));
   out.push_back(make(
-      "curvature.euler_savary.bar_lines", kSeed + ": Euler-Savary",
+      "curvature.euler_savary.bar_lines", kSource + ": Euler-Savary",
       "on every bar line, from the pole P of the motion m/f of the two links the bar joins: "
       "1/(P S_a) - 1/(P S_b) = 1/(delta sin theta) with S_a the near joint and S_b the far joint "
       "(both sides divided by |u|: 1/((S_a-P).u) - 1/((S_b-P).u) = omega^2/(a_P.u))",
@@ -141,7 +141,7 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
       },
       [](const MechanismContext& c) { return !all_bars(c.scene.linkage).empty(); }));
   out.push_back(make(
-      "curvature.euler_savary.rays", kSeed + ": Euler-Savary",
+      "curvature.euler_savary.rays", kSource + ": Euler-Savary",
       "for every requested motion m/f, on rays from the pole P in the directions u = (1,0), (0,1), (1,1), (1,-2), "
       "(3,1) with S_a = P + u and S_b its analytic curvature centre: S_b lies on the ray and "
       "1/((S_a-P).u) - 1/((S_b-P).u) = omega^2/(a_P.u)",
@@ -179,7 +179,7 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
 void add_bobillier_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<const CurvatureAnalysis>& a) {
   for (const bool mirrored : {false, true}) {
     out.push_back(make(
-        mirrored ? "curvature.bobillier.mirrored_step_c" : "curvature.bobillier", kSeed + ": Bobillier, section 5 (a)-(e)",
+        mirrored ? "curvature.bobillier.mirrored_step_c" : "curvature.bobillier", kSource + ": Bobillier, section 5 (a)-(e)",
         mirrored ? "erratum reading: step (c) with the angle measured in the opposite sense, "
                    "angle(q_AC -> PC) = angle(PB -> PQ_AB), gives the curvature centre"
                  : "steps (a)-(e) by line intersections (angle(PC -> q_AC) = angle(PB -> PQ_AB), directed, same sense) "
@@ -224,7 +224,7 @@ void add_joining_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<
       out.push_back(make(
           fmt::format("joint_joining.{}.{}_preserved", order == 1 ? "first_order" : "second_order",
                       acc ? "accelerations" : "velocities"),
-          kSeed + (order == 1 ? ": sections 2-3" : ": section 4"),
+          kSource + (order == 1 ? ": sections 2-3" : ": section 4"),
           fmt::format("{}-order joint-joining (near joints of both bars moved to I{}) preserves the {} of every "
                       "other link (the reduced linkage solved again by the same engine){}",
                       order == 1 ? "first" : "second", order == 1 ? ", far joints kept" : ", far joints relocated by (1')",
@@ -249,7 +249,7 @@ void add_joining_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<
     return false;
   };
   out.push_back(make(
-      "joint_joining.second_order.relocation_is_centre", kSeed + ": eqs. (1'), (3'), (5'), (7'), (1'')-(7'')",
+      "joint_joining.second_order.relocation_is_centre", kSource + ": eqs. (1'), (3'), (5'), (7'), (1'')-(7'')",
       "the far joint relocated by 1/(P F') = 1/(P F) + 1/(P I) - 1/(P N) (P the pole of the ternary link and the far "
       "link) is the analytic curvature centre of I in their relative motion",
       Expectation::Holds,
@@ -266,7 +266,7 @@ void add_joining_claims(std::vector<MechanismClaim>& out, const std::shared_ptr<
       },
       has_second));
   out.push_back(make(
-      "joint_joining.second_order.any_near_point", kSeed + ": section 4 (any point of the bar line)",
+      "joint_joining.second_order.any_near_point", kSource + ": section 4 (any point of the bar line)",
       "replacing one bar by a bar from K = 2I - N (another point of its line) to the far joint relocated by the same "
       "formula (K for I) preserves the angular velocities and accelerations of every other link",
       Expectation::Holds,

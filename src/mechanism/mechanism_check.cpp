@@ -181,7 +181,7 @@ std::vector<MechanismClaim> builtin_mechanism_claims() {
       },
       {}});
   out.push_back(MechanismClaim{
-      ClaimInfo{"mechanism.driver_inversion", "Koshel et al. (seed 003), SPEC.md C: central claim",
+      ClaimInfo{"mechanism.driver_inversion", "Koshel et al., docs/conventions.md §C: central claim",
                 "taking another moving link as the driver, with its omega and omega-dot from the solution, "
                 "gives the same omega and omega-dot for every link",
                 Expectation::Holds, "", 4, 0},

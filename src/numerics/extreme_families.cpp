@@ -19,7 +19,7 @@ Polygon<Rational> from_sides(const std::vector<V>& sides) {
   return Polygon<Rational>(std::move(joints));
 }
 
-// The SPEC A8 pentagon: r_1 = (1,4), r_2 = (4,1), r_3 = a = (2,-4), r_4 = b = (-4,-3).
+// The pentagon of conventions §A8: r_1 = (1,4), r_2 = (4,1), r_3 = a = (2,-4), r_4 = b = (-4,-3).
 const V kR1{1, 4}, kR2{4, 1}, kA{2, -4}, kB{-4, -3};
 
 InputRates<Rational> a8_rates() { return {{2, -1}, {1, 3}}; }

@@ -32,7 +32,7 @@ bool same_up_to_constant(const ex& a, const ex& b) { return GiNaC::is_exactly_a<
 
 using Named = std::vector<std::pair<ex, std::string>>;
 
-/// Named degeneracies of SPEC A6 as polynomials in the symbolic polygon's coordinates: of the
+/// Named degeneracies of conventions §A6 as polynomials in the symbolic polygon's coordinates: of the
 /// sides (cheap), or of the construction's points (built only if a factor is still unnamed).
 Named side_degeneracies(const PolygonContext<ex>& c, const SideNames& names) {
   Named v;

@@ -1,5 +1,5 @@
 // The exceptional set of a symbolic proof: the factors of every divisor that the compared
-// expressions contain, each named where it matches a degeneracy of SPEC A6. Private to src/proof.
+// expressions contain, each named where it matches a degeneracy of conventions §A6. Private to src/proof.
 #pragma once
 
 #include <ginac/ginac.h>

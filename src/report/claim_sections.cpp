@@ -98,7 +98,7 @@ Section errata_section(const std::vector<ClaimOutcome>& claims, const std::strin
   }
   if (sec.subsections.empty()) return sec;
   sec.blocks.push_back(paragraph(plain(
-      "Each erratum reading (the seed's printed form or a tempting misreading, SPEC A5) is shown beside the corrected "
+      "Each erratum reading (the paper's printed form or a tempting misreading, docs/conventions.md §A5) is shown beside the corrected "
       "claim, evaluated on the same scene.")));
   if (any_fails_here && !scene_text.empty()) {
     sec.blocks.push_back(paragraph(plain("The counterexample scene (run `linkproof check` on it):")));

@@ -26,7 +26,8 @@ constexpr std::pair<const char*, const char*> kUnicodeTex[] = {
     {"μ", "$\\mu$"},        {"Σ", "$\\Sigma$"}, {"≠", "$\\neq$"},  {"≤", "$\\le$"},     {"≥", "$\\ge$"},
     {"×", "$\\times$"},     {"·", "$\\cdot$"},  {"→", "$\\to$"},   {"−", "-"},          {"–", "--"},
     {"—", "---"},           {"′", "'"},         {"²", "$^2$"},     {"…", "\\dots{}"},   {"ε", "$\\varepsilon$"},
-    {"≈", "$\\approx$"},    {"∞", "$\\infty$"}, {"α", "$\\alpha$"}, {"γ", "$\\gamma$"}};
+    {"≈", "$\\approx$"},    {"∞", "$\\infty$"}, {"α", "$\\alpha$"}, {"γ", "$\\gamma$"},
+    {"§", "\\S{}"}};
 
 }  // namespace
 
@@ -108,8 +109,11 @@ std::string latex_verbatim(const std::string& code) {
   for (std::size_t i = 0; i < code.size();) {
     const auto u = static_cast<unsigned char>(code[i]);
     if (u >= 0x80) {
-      text += '?';
-      i += non_ascii_length(code, i);
+      // The section sign of the citations (docs/conventions.md §A3) is spelled out; the rest has
+      // no ASCII form.
+      const bool section = code.compare(i, 2, "§") == 0;
+      text += section ? "sec. " : "?";
+      i += section ? 2 : non_ascii_length(code, i);
       continue;
     }
     if (u == '\r') {

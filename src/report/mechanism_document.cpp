@@ -131,7 +131,7 @@ Drawing plan_drawing(const MechanismScene& scene, const MechanismCheck& check, b
   return d;
 }
 
-// Seed 001: the four-bar's acceleration polygon head to tail, in the order of the textbook's
+// The four-bar's acceleration polygon head to tail (conventions §B), in the order of the course notes'
 // rearranged equation A_A^n + A_A^t + A_BA^n - A_B^n + A_BA^t - A_B^t = 0.
 std::optional<Drawing> fourbar_polygon_drawing(const MechanismScene& scene) {
   const auto roles = identify_fourbar(scene.linkage, scene.inputs);
@@ -170,7 +170,7 @@ Section plans_section(const MechanismScene& scene, const MechanismCheck& check) 
                                    plan_drawing(scene, check, true)}));
   if (auto fb = fourbar_polygon_drawing(scene))
     s.blocks.push_back(figure_block({scene.name + "-acceleration-polygon",
-                                     "The four-bar's acceleration polygon as the textbook draws it (seed 001): from the "
+                                     "The four-bar's acceleration polygon as the course notes draw it (docs/conventions.md §B): from the "
                                      "acceleration origin O_A, head to tail, A_A^n, A_A^t, A_BA^n, -A_B^n, then the "
                                      "tangential A_BA^t and -A_B^t close it; the dashed vector is A_A.",
                                      *fb}));

@@ -107,7 +107,7 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
   if (n > kSymbolicReportMaxN) {
     s.blocks.push_back(paragraph(
         {text(fmt::format("At n = {} the derived expressions have O(n) terms; they are not printed (printed for n ≤ {}). "
-                          "The engine's result agrees with SPEC A2: ",
+                          "The engine's result agrees with docs/conventions.md §A2: ",
                           n, kSymbolicReportMaxN))}));
     s.blocks.push_back(display_math("\\omega_{n-1} D = \\sum_j \\omega_j (r_j \\times r_{n-2}),\\qquad "
                                     "\\omega_{n-2} D = \\sum_j \\omega_j (r_{n-1} \\times r_j)"));
@@ -222,7 +222,7 @@ Section construction_section(const PolygonScene& scene) {
       {text("Four-bar j is "), math("K'_j K_{n-2} K_{n-1} K_n"), text(" with "), math("K'_j = K_{n-2} - r_j"),
        text("; "), math("Q_j = K_{n-2}K_{n-1} \\cap K_nK'_j"), text(", "), math("P'_j = K_{n-1}K_n \\cap K'_jK_{n-2}"),
        text("; the ratios are directed segments and "), math("\\beta_j > 0"),
-       text(" iff P'_j → Q_j → K_{n-1} is counter-clockwise (SPEC A3). Exact values:")}));
+       text(" iff P'_j → Q_j → K_{n-1} is counter-clockwise (docs/conventions.md §A3). Exact values:")}));
   Table t{{plain("j"), tex("K'_j"), tex("Q_j"), tex("P'_j"), tex("i_{n-1,j}"), tex("i_{n-2,j}"), tex("\\cot\\beta_j"),
            tex("\\lambda_j")},
           {}};

@@ -65,7 +65,7 @@ std::string_view bias_name(Bias b) {
 /// The label of a bias that the family cannot have (the header says why): the case is ordinary.
 std::string does_not_apply(Bias b) { return fmt::format("/{}-does-not-apply", bias_name(b)); }
 
-/// One loop of a mechanism read as Dijksman's polygon (SPEC A1): K_1..K_n point into the case's
+/// One loop of a mechanism read as Dijksman's polygon (conventions §A1): K_1..K_n point into the case's
 /// joints, side n is fixed, sides 1..n-3 are the known ones.
 struct LoopRef {
   std::vector<Point*> k;

@@ -48,7 +48,7 @@ TEST(JudgeStability, NearAPoleOfTheConstructionTrueClaimsAreInconclusiveNotFails
   }
 }
 
-// Q_1 at infinity (SPEC A6) at eps = 1e-14: the construction loses ~1e-16/eps relative in
+// Q_1 at infinity (conventions §A6) at eps = 1e-14: the construction loses ~1e-16/eps relative in
 // double, so double is inconclusive there; mp1000 (u = 2^-3392) loses the same factor of a far
 // smaller u and decides every comparison exactly as exact arithmetic does.
 TEST(JudgeStability, Mp1000DecidesWhereDoubleIsInconclusiveNearQAtInfinity) {

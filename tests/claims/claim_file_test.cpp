@@ -58,7 +58,7 @@ TEST(ClaimFile, StructuralErrorsAreNamed) {
 }
 
 TEST(ClaimFile, UserClaimRoundTripsThroughParserAndChecker) {
-  // eq. (5) written by a user with the closed-form ratios: holds exactly on the SPEC pentagon.
+  // eq. (5) written by a user with the closed-form ratios: holds exactly on the pentagon of conventions §A8.
   const ClaimFile f = parse_claim_file(
       "claims:\n  - id: mine.eq5\n    source: notes\n    statement: s\n    lhs: omega_out\n"
       "    rhs: sum_j(i_out_closed[j]*omega[j])\n",

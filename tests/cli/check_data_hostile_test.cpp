@@ -55,7 +55,7 @@ nlohmann::json json_of(const test::CliRun& r) {
 
 // ---- item 1: recorded slider rates are compared with the exact sliding rates
 
-// The class-III mechanism of seed 003: sliders D (joint 4) and H (joint 9, beyond the 8 links),
+// The class-III mechanism of Koshel et al. (conventions §C): sliders D (joint 4) and H (joint 9, beyond the 8 links),
 // with the user's alpha of link 2 (a rotating link) and the sliding rates v.D, a.H.
 const std::string kClass3 = source_file("verify/scenes/mechanisms/seed003_class3.yaml");
 std::string class3_csv(const std::string& alpha2, const std::string& vd, const std::string& ah) {

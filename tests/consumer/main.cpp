@@ -1,4 +1,4 @@
-// Consumer of the installed package: computes the SPEC A8 pentagon exactly through the public
+// Consumer of the installed package: computes the pentagon of conventions §A8 exactly through the public
 // API and checks omega-dot of side 4 against the known answer 3755/1331.
 // Exit code 0 iff it matches.
 #include <iostream>

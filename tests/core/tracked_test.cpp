@@ -153,9 +153,9 @@ TYPED_TEST(TrackedTyped, RadiusEnclosesTheExactValueOfRandomPrograms) {
   for (std::uint64_t seed = 1; seed <= 150; ++seed) check_random_program<TypeParam>(seed);
 }
 
-// SPEC A8 pentagon, read from the bundled scene: truth, closed forms and construction in
-// Tracked<F> enclose the exact values printed in the SPEC, with a tight radius.
-TYPED_TEST(TrackedTyped, PentagonValuesOfSpecA8AreEnclosedTightly) {
+// The pentagon of conventions §A8, read from the bundled scene: truth, closed forms and construction in
+// Tracked<F> enclose the exact values printed in conventions §A8, with a tight radius.
+TYPED_TEST(TrackedTyped, PentagonValuesOfConventionsA8AreEnclosedTightly) {
   using T = Tracked<TypeParam>;
   const PolygonScene s = load_polygon_scene(std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/pentagon.yaml");
   GroundTruthEngine engine;

@@ -1,4 +1,4 @@
-// The eight-bar of Fig. 5 (SPEC A7, A8): ranks 21 -> 22 -> 28, exact omega and omega-dot, and
+// The eight-bar of Fig. 5 (conventions §A7, §A8): ranks 21 -> 22 -> 28, exact omega and omega-dot, and
 // the same answers from other loops and other fixed sides (an independent route).
 #include "linkproof/count/compound_count.h"
 
@@ -33,7 +33,7 @@ TEST(CompoundCount, EightBarRanksAre21Then22Then28) {
   EXPECT_TRUE(c.velocity.consistent());
 }
 
-TEST(CompoundCount, EightBarSolutionIsTheSpecA8Answer) {
+TEST(CompoundCount, EightBarSolutionIsTheConventionsA8Answer) {
   const CompoundCount c = count_fig5(kFig5Polygons);
   const std::vector<Rational> omega = {0, 1, q(-7, 317), q(60, 317), q(159, 317), q(-20, 317), q(-279, 317), q(22, 317)};
   for (size_t l = 0; l < omega.size(); ++l) {

@@ -1,4 +1,4 @@
-// Exact ranks of the rate relations (SPEC A7): triangle relations for n = 3..60, the rank-2
+// Exact ranks of the rate relations (conventions §A7): triangle relations for n = 3..60, the rank-2
 // families over all choices of the fixed side, and must-fail cases.
 #include "linkproof/count/counting.h"
 
@@ -65,7 +65,7 @@ void expect_rank_two_families(const Polygon<Rational>& p, const std::vector<Rati
   }
 }
 
-TEST(Counting, FixedSideFamiliesHaveRankTwoOnTheSpecPentagonAndHexagon) {
+TEST(Counting, FixedSideFamiliesHaveRankTwoOnTheA8PentagonAndHexagon) {
   for (const auto& ex : {test::spec_pentagon(), test::spec_hexagon()})
     expect_rank_two_families(ex.polygon, side_velocities(ex.polygon, ex.rates));
 }
@@ -83,7 +83,7 @@ TEST(Counting, FixedSideFamiliesHaveRankTwoOnRandomPolygons) {
     }
 }
 
-TEST(Counting, SideVelocitiesAreTheSpecPentagonAnswers) {
+TEST(Counting, SideVelocitiesAreTheA8PentagonAnswers) {
   const auto ex = test::spec_pentagon();
   const auto w = side_velocities(ex.polygon, ex.rates);
   EXPECT_EQ(w, (std::vector<Rational>{2, -1, test::q(17, 11), test::q(3, 11), 0}));

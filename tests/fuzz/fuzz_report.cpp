@@ -1,8 +1,8 @@
 // libFuzzer target: report output safety (report/escape.h). The input, cut at NUL bytes, gives
 // the strings a user controls: a scene's name and description, link, joint and point names,
 // a claim's id, source, statement and note, a term label, a table title, a command line. They
-// go into a mechanism report (the seed-001 four-bar, built in memory with a hand-made check:
-// no solver runs) and a document with a string in every slot; both are rendered as LaTeX,
+// go into a mechanism report (the four-bar of the acceleration-polygon course notes, built in
+// memory with a hand-made check: no solver runs) and a document with a string in every slot; both are rendered as LaTeX,
 // Markdown and HTML. Each rendering is compared with that of its twin, the same document with
 // every string replaced by a harmless one of the same shape: the structure must be the same.
 // Aborts (a libFuzzer crash) when

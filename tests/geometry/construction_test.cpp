@@ -1,4 +1,4 @@
-// Known answers of SPEC.md A8: every intermediate quantity of the construction.
+// Known answers of conventions §A8: every intermediate quantity of the construction.
 #include <gtest/gtest.h>
 
 #include "linkproof/geometry/closed_forms.h"
@@ -15,7 +15,7 @@ void expect_point(const Vec2<Rational>& p, const Rational& x, const Rational& y)
   EXPECT_EQ(p.y, y) << format_rational(p.y);
 }
 
-TEST(Construction, PentagonReproducesSpecA8Quantities) {
+TEST(Construction, PentagonReproducesConventionsA8Quantities) {
   const auto ex = test::spec_pentagon();
   const auto c1 = construct_four_bar(ex.polygon, 1);
   expect_point(c1.k_prime, 4, 1);
@@ -41,7 +41,7 @@ TEST(Construction, PentagonReproducesSpecA8Quantities) {
   EXPECT_EQ(cf.rho, q(-10, 11));
 }
 
-TEST(Construction, HexagonReproducesSpecA8Ratios) {
+TEST(Construction, HexagonReproducesConventionsA8Ratios) {
   const auto ex = test::spec_hexagon();
   const Rational i_out[] = {q(4, 19), q(14, 19), q(15, 19)};
   const Rational i_cpl[] = {q(16, 19), q(-1, 19), q(-16, 19)};
@@ -56,7 +56,7 @@ TEST(Construction, HexagonReproducesSpecA8Ratios) {
   }
 }
 
-TEST(Construction, ClosedFormsEqualConstructionOnSpecExamples) {
+TEST(Construction, ClosedFormsEqualConstructionOnWorkedExamples) {
   for (const auto& ex : {test::spec_pentagon(), test::spec_hexagon()}) {
     const auto cf = compute_closed_forms(ex.polygon);
     for (int j = 1; j <= ex.polygon.n() - 3; ++j) {
@@ -64,7 +64,7 @@ TEST(Construction, ClosedFormsEqualConstructionOnSpecExamples) {
       EXPECT_EQ(c.i_out.get(), cf.i_out[j - 1]);
       EXPECT_EQ(c.i_cpl.get(), cf.i_cpl[j - 1]);
       EXPECT_EQ(c.lambda.get(), cf.lambda[j - 1]);
-      EXPECT_EQ(c.mu.get(), cf.mu[j - 1]);  // gamma's sign rule (SPEC A4 companion)
+      EXPECT_EQ(c.mu.get(), cf.mu[j - 1]);  // gamma's sign rule (conventions §A4 companion)
     }
   }
 }
@@ -79,7 +79,7 @@ TEST(Construction, ParallelLinesReportQAtInfinityByName) {
   EXPECT_FALSE(c.q.has_value());
   EXPECT_EQ(c.q.quantity(), "Q_1");
   EXPECT_FALSE(c.i_out.has_value());
-  EXPECT_EQ(compute_closed_forms(p).i_out[0], 1);  // the continuous extension (SPEC A6)
+  EXPECT_EQ(compute_closed_forms(p).i_out[0], 1);  // the continuous extension (conventions §A6)
 }
 
 TEST(Construction, DirectedRatioIsNegativeWhenPointsStraddleTheOrigin) {

@@ -78,7 +78,7 @@ TEST(BundledScene, PentagonParsesToExactValues) {
   expect_joints(s, {{q(0), q(0)}, {q(1), q(4)}, {q(5), q(5)}, {q(7), q(1)}, {q(3), q(-2)}});
   EXPECT_EQ(s.rates.omega, (std::vector<Rational>{q(2), q(-1)}));
   EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{q(1), q(3)}));
-  EXPECT_EQ(s.polygon.dead_centre_determinant(), q(-22));  // SPEC A8: D = -22
+  EXPECT_EQ(s.polygon.dead_centre_determinant(), q(-22));  // conventions §A8: D = -22
 }
 
 TEST(BundledScene, HexagonParsesToExactValues) {

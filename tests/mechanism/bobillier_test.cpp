@@ -1,4 +1,4 @@
-// Bobillier's construction (a)-(e) against the analytic curvature centre (SPEC.md D).
+// Bobillier's construction (a)-(e) against the analytic curvature centre (conventions §D).
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -69,7 +69,8 @@ TEST(Bobillier, MirroredStepCMissesTheCentreInAlmostEveryRandomFourBar) {
 }
 
 TEST(Bobillier, PointOnThePoleRayPAUsesTheBVersion) {
-  // Seed 001's four-bar: C = A lies on the ray PA; the B/beta version gives A's centre O2.
+  // The four-bar of the course notes (conventions §B): C = A lies on the ray PA; the B/beta
+  // version gives A's centre O2.
   const Vec2<Rational> O2{0, 0}, A{3, 4}, B{11, 10}, O4{11, 0};
   const auto b = construct_bobillier(A, O2, B, O4, A);
   EXPECT_EQ(b.version, 'B');

@@ -1,4 +1,4 @@
-// Poles, path curvature centres, Euler-Savary and the inflection circle (SPEC.md D).
+// Poles, path curvature centres, Euler-Savary and the inflection circle (conventions §D).
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

@@ -1,4 +1,4 @@
-// Dijksman's multi-polygon method (SPEC.md A7) against the exact engine on random rational
+// Dijksman's multi-polygon method (conventions §A7) against the exact engine on random rational
 // four-bars, Watt and Stephenson six-bars and Fig. 5-type eight-bars; a slider-crank against a
 // hand-derived closed form; a must-fail variant.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Joint-joining of Dijksman (1984): first order keeps velocities, second order also
-// accelerations (SPEC.md D), on random rational eight-bars.
+// accelerations (conventions §D), on random rational eight-bars.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

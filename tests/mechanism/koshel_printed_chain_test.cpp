@@ -1,4 +1,4 @@
-// Seed 003's printed arithmetic chain (SPEC.md C): every step consistent within its printed
+// Koshel et al.'s printed arithmetic chain (conventions §C): every step consistent within its printed
 // digits except (7), whose printed 52.9 is 0.225 below 25^2 * 0.085 = 53.125.
 #include <gtest/gtest.h>
 

@@ -34,7 +34,7 @@ Rational omega_dot_of(const MechanismScene& s, const MechanismSolution<Rational>
   return m.motion.omega_dot[static_cast<size_t>(*s.linkage.find_link(link))];
 }
 
-TEST(MechanismEngine, EightBarOfFig5ReproducesSpecA8Exactly) {
+TEST(MechanismEngine, EightBarOfFig5ReproducesConventionsA8Exactly) {
   const MechanismScene s = load_mechanism_scene(scene_path("fig5_eightbar.yaml"));
   const auto m = solve_symbolic(s);
   EXPECT_EQ(m.mobility, 1);
@@ -59,7 +59,7 @@ TEST(MechanismEngine, SymbolicClosureAndVectorRouteGiveTheSameSystem) {
   }
 }
 
-TEST(MechanismEngine, FourBarOfSeed001ReproducesSpecB) {
+TEST(MechanismEngine, FourBarOfSeed001ReproducesConventionsB) {
   const MechanismScene s = load_mechanism_scene(scene_path("seed001_fourbar.yaml"));
   const auto m = solve_symbolic(s);
   EXPECT_EQ(format_rational(omega_of(s, m, "3")), "-3/4");

@@ -1,4 +1,4 @@
-// SPEC.md E: the PMKS_Verification six-bars (Watt I, Stephenson III) at the samples where MATLAB
+// conventions §E: the PMKS_Verification six-bars (Watt I, Stephenson III) at the samples where MATLAB
 // and PMKS disagreed. The exact engine must reproduce alpha_exact and omega_exact (25 digits).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -3,7 +3,7 @@
 // construct_four_bar only where a step is undefined. These tests pin down that this fast path
 // computes what reading i_{n-1,j}, i_{n-2,j}, lambda_j, mu_j off construct_four_bar(p, j) for each
 // j computes (bit for bit in floating point, exactly in Rational), and that where the
-// construction breaks (SPEC A6) it names the same quantity for the same reason.
+// construction breaks (conventions §A6) it names the same quantity for the same reason.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -162,7 +162,7 @@ TYPED_TEST(ConstructionRoute, FastRouteEqualsConstructFourBarRouteOnRandomPolygo
   this->RecordProperty("undefined_cases", undefined);
 }
 
-/// Every degeneracy family of SPEC A6 (numerics/extreme_families.h) at epsilon = 0, where the
+/// Every degeneracy family of conventions §A6 (numerics/extreme_families.h) at epsilon = 0, where the
 /// construction breaks, and next to it.
 TYPED_TEST(ConstructionRoute, FastRouteEqualsConstructFourBarRouteOnEveryDegeneracyFamily) {
   for (const ExtremeFamily& f : extreme_families()) {

@@ -1,4 +1,4 @@
-// check-data on the PMKS six-bars (SPEC.md E): the exact alphas at the recorded positions are
+// check-data on the PMKS six-bars (conventions §E): the exact alphas at the recorded positions are
 // alpha_exact to 25 digits, MATLAB agrees everywhere, the old PMKS analyser's clipped samples
 // differ, and positions that do not keep the links rigid are flagged.
 #include <gtest/gtest.h>

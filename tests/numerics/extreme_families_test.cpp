@@ -52,7 +52,7 @@ TEST(ExtremeFamilies, AwayFromTheLimitEveryRouteExistsAndAgreesExactly) {
 }
 
 TEST(ExtremeFamilies, ConstructionLosesDigitsTowardsTheLimitWhileTheClosedFormsDoNot) {
-  // SPEC A6: near Q_j -> infinity the construction loses accuracy like 1e-16 / eps in double.
+  // conventions §A6: near Q_j -> infinity the construction loses accuracy like 1e-16 / eps in double.
   GroundTruthEngine engine;
   const ExtremeFamily& f = *find_extreme_family("q_infinity");
   StudyOptions o;

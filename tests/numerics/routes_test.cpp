@@ -31,7 +31,7 @@ void expect_close(const T& computed, const Rational& exact, const char* what) {
   }
 }
 
-TYPED_TEST(RoutesOnLadder, EveryRouteGivesTheSpecPentagonAnswer) {
+TYPED_TEST(RoutesOnLadder, EveryRouteGivesTheA8PentagonAnswer) {
   using T = TypeParam;
   const auto ex = test::spec_pentagon();
   const Polygon<T> p = ex.polygon.convert<T>();
@@ -44,7 +44,7 @@ TYPED_TEST(RoutesOnLadder, EveryRouteGivesTheSpecPentagonAnswer) {
   }
 }
 
-TYPED_TEST(RoutesOnLadder, EveryRouteGivesTheSpecHexagonAnswer) {
+TYPED_TEST(RoutesOnLadder, EveryRouteGivesTheA8HexagonAnswer) {
   using T = TypeParam;
   const auto ex = test::spec_hexagon();
   const Polygon<T> p = ex.polygon.convert<T>();

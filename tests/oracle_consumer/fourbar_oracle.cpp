@@ -30,8 +30,8 @@ RC_GTEST_PROP(MyFourBar, PlantedBugIsCaught, ()) {
   lt::rc_assert_alpha_matches(*lt::gen_fourbar(), buggy_fourbar_alpha);
 }
 
-// The GTest matchers on a fixed case: SPEC.md B's four-bar, and Dijksman's eq. (22).
-TEST(MyFourBar, SpecBFourBarMatchesTheExactTruth) {
+// The GTest matchers on a fixed case: the four-bar of conventions §B, and Dijksman's eq. (22).
+TEST(MyFourBar, ConventionsBFourBarMatchesTheExactTruth) {
   const lt::MechanismCase c = lt::make_fourbar({0, 0}, {3, 4}, {11, 10}, {11, 0}, 2, 5);
   const lt::MechanismTruth truth = lt::compute_truth(c.scene);
   EXPECT_THAT(my_fourbar_alpha(c.scene.linkage, c.scene.inputs),
@@ -46,10 +46,10 @@ RC_GTEST_PROP(MyFourBar, GeneratedPentagonsSatisfyEq22, ()) {
   const lt::PolygonCase p = *lt::gen_polygon(o);
   lt::classify_case(p);
   const lt::ClaimResult r = lt::check_claim("dijksman1966.eq22", p);
-  RC_ASSERT(r.holds || r.verdict == "undefined");  // undefined: Q_j or P'_j at infinity (SPEC A6)
+  RC_ASSERT(r.holds || r.verdict == "undefined");  // undefined: Q_j or P'_j at infinity (conventions §A6)
 }
 
-TEST(MyFourBar, ClaimHoldsOnTheSpecPentagon) {
+TEST(MyFourBar, ClaimHoldsOnTheA8Pentagon) {
   const lt::PolygonCase p{"polygon/spec-a8", linkproof::Polygon<linkproof::Rational>({{0, 0}, {1, 4}, {5, 5}, {7, 1}, {3, -2}}),
                           {{2, -1}, {1, 3}}};
   EXPECT_THAT(p, lt::ClaimHolds("dijksman1966.eq22"));

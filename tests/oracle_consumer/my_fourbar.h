@@ -1,5 +1,5 @@
 // The "user's library" of the oracle consumer: a four-bar's angular accelerations by the
-// classical vector loop (SPEC.md B), written in plain double as a kinematics library would.
+// classical vector loop (conventions §B), written in plain double as a kinematics library would.
 #pragma once
 
 #include <vector>

@@ -21,6 +21,8 @@ TEST(ReportEscape, PlainNamesAreKeptInEveryLanguage) {
   EXPECT_EQ(file_stem("pentagon-construction"), "pentagon-construction");
   EXPECT_EQ(anchor_id("proof-dijksman1966.eq5"), "proof-dijksman1966.eq5");
   EXPECT_EQ(latex_escape("K'_j at (−8, 31) ω̇"), "K'\\_j at (-8, 31) $\\dot\\omega$");
+  EXPECT_EQ(latex_escape("docs/conventions.md §A3"), "docs/conventions.md \\S{}A3");  // the citations
+  EXPECT_EQ(latex_verbatim("§A8 \xce\xb2"), "\\begin{verbatim}\nsec. A8 ?\n\\end{verbatim}\n");
 }
 
 TEST(ReportEscape, FileStemOfAPathIsOneNameInsideTheDirectory) {

@@ -79,7 +79,7 @@ inline std::vector<std::string> latex_structure(const std::string& tex) {
   static const char* made_by_escaping[] = {
       "textbackslash", "textasciitilde", "textasciicircum", "backslash", "hat", "sim", "dots", "omega", "dot",
       "beta", "lambda", "varphi", "mu", "Sigma", "neq", "le", "ge", "times", "cdot", "to", "varepsilon",
-      "approx", "infty", "alpha", "gamma", "phi"};
+      "approx", "infty", "alpha", "gamma", "phi", "S"};
   std::vector<std::string> out;
   for (std::size_t i = 0; i < tex.size(); ++i) {
     if (tex[i] != '\\' || i + 1 >= tex.size()) continue;

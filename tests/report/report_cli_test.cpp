@@ -38,7 +38,7 @@ TEST(ReportCli, PentagonHtmlHasTheSectionsInOrderWithExactValues) {
   const std::string html = slurp(dir.path / "pentagon.html");
   expect_sections_in_order(html, {"summary", "derivation", "construction", "terms", "errata", "reproduce"});
   EXPECT_EQ(html.find("<section id=\"numerics\">"), std::string::npos);  // not asked
-  EXPECT_NE(html.find("7331/2662"), std::string::npos);                  // omega-dot_{3,5} (SPEC A8)
+  EXPECT_NE(html.find("7331/2662"), std::string::npos);                  // omega-dot_{3,5} (conventions §A8)
   EXPECT_NE(html.find("3755/1331"), std::string::npos) << "omega-dot_{4,5}";
   EXPECT_NE(html.find("(\\frac{26}{5},\\ \\frac{23}{5})"), std::string::npos) << "Q_1";
   EXPECT_NE(html.find("-\\frac{705}{2662}"), std::string::npos) << "lambda_1";
@@ -81,7 +81,7 @@ TEST(ReportCli, EightBarReportDrawsTheLinkageAndListsExactRates) {
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string html = slurp(dir.path / "fig5_eightbar.html");
   expect_sections_in_order(html, {"summary", "mechanism", "reproduce"});
-  EXPECT_NE(html.find("-279/317"), std::string::npos);  // omega of link 6 (SPEC A8)
+  EXPECT_NE(html.find("-279/317"), std::string::npos);  // omega of link 6 (conventions §A8)
   EXPECT_NE(html.find("<polygon"), std::string::npos);  // a plate (link with three joints)
   EXPECT_EQ(html.find("<section id=\"plans\">"), std::string::npos);
 }
@@ -94,7 +94,7 @@ TEST(ReportCli, Seed001FourBarPlansDrawTheTextbookAccelerationPolygon) {
   const std::string html = slurp(dir.path / "seed001_fourbar.html");
   expect_sections_in_order(html, {"summary", "mechanism", "plans", "tables", "reproduce"});
   EXPECT_NE(html.find("id=\"fig-fourbar-seed001-acceleration-polygon\""), std::string::npos);
-  EXPECT_NE(html.find("3109/800"), std::string::npos);            // alpha4 (SPEC B)
+  EXPECT_NE(html.find("3109/800"), std::string::npos);            // alpha4 (conventions §B)
   EXPECT_NE(html.find("(10923/1222, 17083/1222)"), std::string::npos);  // curvature centre of P
 }
 

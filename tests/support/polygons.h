@@ -1,4 +1,4 @@
-// Test support: the worked examples of SPEC.md A8 as exact polygons.
+// Test support: the worked examples of conventions §A8 as exact polygons.
 #pragma once
 
 #include "linkproof/geometry/polygon.h"
@@ -10,12 +10,12 @@ struct Example {
   InputRates<Rational> rates;
 };
 
-/// SPEC A8 pentagon: K = (0,0),(1,4),(5,5),(7,1),(3,-2); omega = 2, -1; omega-dot = 1, 3.
+/// The pentagon of conventions §A8: K = (0,0),(1,4),(5,5),(7,1),(3,-2); omega = 2, -1; omega-dot = 1, 3.
 inline Example spec_pentagon() {
   return {Polygon<Rational>({{0, 0}, {1, 4}, {5, 5}, {7, 1}, {3, -2}}), {{2, -1}, {1, 3}}};
 }
 
-/// SPEC A8 hexagon: K = (0,0),(0,4),(3,6),(7,5),(8,1),(4,-2); omega = 1,-2,3; omega-dot = 1/2,-1,2.
+/// The hexagon of conventions §A8: K = (0,0),(0,4),(3,6),(7,5),(8,1),(4,-2); omega = 1,-2,3; omega-dot = 1/2,-1,2.
 inline Example spec_hexagon() {
   return {Polygon<Rational>({{0, 0}, {0, 4}, {3, 6}, {7, 5}, {8, 1}, {4, -2}}),
           {{1, -2, 3}, {Rational(1) / 2, -1, 2}}};

@@ -1,4 +1,4 @@
-// The symbolic ground truth against SPEC.md A2's closed forms: exactly on random polygons,
+// The symbolic ground truth against the closed forms of conventions §A2: exactly on random polygons,
 // and as a rational-function identity in generic symbols.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@ namespace {
 
 using test::q;
 
-TEST(GroundTruth, PentagonMatchesSpecA8) {
+TEST(GroundTruth, PentagonMatchesConventionsA8) {
   GroundTruthEngine engine;
   const auto ex = test::spec_pentagon();
   const auto m = engine.motion(ex.polygon, ex.rates);
@@ -23,7 +23,7 @@ TEST(GroundTruth, PentagonMatchesSpecA8) {
   EXPECT_EQ(m.omega[4], 0);
 }
 
-TEST(GroundTruth, HexagonMatchesSpecA8) {
+TEST(GroundTruth, HexagonMatchesConventionsA8) {
   GroundTruthEngine engine;
   const auto ex = test::spec_hexagon();
   const auto m = engine.motion(ex.polygon, ex.rates);
@@ -49,7 +49,7 @@ TEST(GroundTruth, EqualsClosedFormsOnRandomPolygonsN4To12) {
   }
 }
 
-TEST(GroundTruth, TermCoefficientsMatchSpecA4Structure) {
+TEST(GroundTruth, TermCoefficientsMatchConventionsA4Structure) {
   // Coefficient of omega-dot_j is i_{n-1,j}; of omega_j^2 is lambda_j; of omega_j omega_l is
   // -2[cot phi i_{n-1,j} i_{n-1,l} + (|r_{n-2}|^2/D) i_{n-2,j} i_{n-2,l}] (closed forms).
   GroundTruthEngine engine;

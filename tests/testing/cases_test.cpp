@@ -1,5 +1,5 @@
 // linkproof::testing case builders: exact Grashof classes, polygons as closed chains, the named
-// families assemble and solve exactly (SPEC.md A8 known answers).
+// families assemble and solve exactly (conventions §A8 known answers).
 #include <gtest/gtest.h>
 
 #include "linkproof/symbolic/ground_truth.h"
@@ -40,7 +40,7 @@ TEST(TestingCases, PolygonAsClosedChainHasThePolygonsGroundTruth) {
                 {{2, -1}, {1, 3}}};
   const MechanismTruth t = compute_truth(polygon_mechanism(p).scene);
   ASSERT_EQ(t.links.size(), 5u);
-  EXPECT_EQ(t.links[3].alpha, q(3755, 1331));  // omega-dot_{4,5} of SPEC A8
+  EXPECT_EQ(t.links[3].alpha, q(3755, 1331));  // omega-dot_{4,5} of conventions §A8
   EXPECT_EQ(t.links[2].alpha, q(7331, 2662));
   EXPECT_EQ(t.links[2].omega, q(17, 11));
   GroundTruthEngine engine;
@@ -48,7 +48,7 @@ TEST(TestingCases, PolygonAsClosedChainHasThePolygonsGroundTruth) {
   for (size_t j = 0; j < 5; ++j) EXPECT_EQ(t.links[j].alpha, m.omega_dot[j]) << j;
 }
 
-TEST(TestingCases, Fig5EightBarBuilderReproducesSpecA8) {
+TEST(TestingCases, Fig5EightBarBuilderReproducesConventionsA8) {
   const MechanismCase c = make_fig5_eightbar({pt(0, 4), pt(6, 9), pt(12, 7), pt(10, 0), pt(0, 0), pt(1, 2), pt(10, 3),
                                               pt(11, 4), pt(5, 4), pt(6, 3)},
                                              1, q(1, 2));

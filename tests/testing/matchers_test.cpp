@@ -13,11 +13,11 @@ namespace {
 Point pt(long x, long y) { return {Rational(x), Rational(y)}; }
 
 MechanismCase seed001_fourbar() {
-  // SPEC.md B: O2 (0,0), A (3,4), B (11,10), O4 (11,0), omega2 = 2, alpha2 = 5.
+  // conventions §B: O2 (0,0), A (3,4), B (11,10), O4 (11,0), omega2 = 2, alpha2 = 5.
   return make_fourbar(pt(0, 0), pt(3, 4), pt(11, 10), pt(11, 0), 2, 5);
 }
 
-TEST(TestingMatchers, AngularAccelerationsMatchAcceptsTheTruthOfSpecB) {
+TEST(TestingMatchers, AngularAccelerationsMatchAcceptsTheTruthOfConventionsB) {
   const MechanismCase c = seed001_fourbar();
   const MechanismTruth t = compute_truth(c.scene);
   EXPECT_EQ(t.links[2].alpha, Rational(63) / 160);   // alpha3
@@ -41,7 +41,7 @@ TEST(TestingMatchers, AngularAccelerationsMatchRejectsAWrongLinkAndShowsTheExact
   EXPECT_FALSE(m.Matches({0.0, 1.0}));  // wrong count
 }
 
-TEST(TestingMatchers, ClaimHoldsOnTheSpecPentagonAndExplainsAnErratum) {
+TEST(TestingMatchers, ClaimHoldsOnTheA8PentagonAndExplainsAnErratum) {
   PolygonCase p{"polygon/scattered/n=5", Polygon<Rational>({pt(0, 0), pt(1, 4), pt(5, 5), pt(7, 1), pt(3, -2)}),
                 {{2, -1}, {1, 3}}};
   EXPECT_THAT(p, ClaimHolds("dijksman1966.eq22"));
@@ -60,7 +60,7 @@ RC_GTEST_PROP(TestingMatchers, Eq22HoldsOnEveryGeneratedPolygonWhereItsConstruct
   const PolygonCase c = *gen_polygon(o);
   classify_case(c);
   const ClaimResult r = check_claim("dijksman1966.eq22", c);
-  // Undefined where the construction is (Q_j or P'_j at infinity, SPEC A6); never fails.
+  // Undefined where the construction is (Q_j or P'_j at infinity, conventions §A6); never fails.
   RC_CLASSIFY(!r.holds, "construction undefined");
   RC_ASSERT(r.holds || r.verdict == "undefined");
 }

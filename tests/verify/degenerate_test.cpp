@@ -1,8 +1,8 @@
-// The degenerate configurations of Dijksman's construction (SPEC.md A6), one bundled scene per
+// The degenerate configurations of Dijksman's construction (conventions §A6), one bundled scene per
 // family in verify/scenes/degenerate/, each an exact rational polygon that meets its condition
 // exactly (checked here from the loaded scene, not taken on trust from its description).
 //
-// What SPEC A6 requires, family by family: only the dead centre D = 0 is a singularity of the
+// What conventions §A6 requires, family by family: only the dead centre D = 0 is a singularity of the
 // mechanism (everything undefined); elsewhere the construction forms 0 * infinity, so the claims
 // that use the broken part of the construction for index j are `undefined`, naming the quantity,
 // while the claims built on the engine and the closed forms still hold, the closed forms give the
@@ -49,7 +49,7 @@ std::string describe(const PolygonScene& s) {
   return out;
 }
 
-/// The per-index conditions of SPEC A6 (the dead centre is a property of the whole polygon).
+/// The per-index conditions of conventions §A6 (the dead centre is a property of the whole polygon).
 enum class Condition { QAtInfinity, BetaUndefined, PPrimeAtInfinity, QAtOutputJoint, KPrimeAtGround };
 
 std::string to_string(Condition c) {
@@ -63,7 +63,7 @@ std::string to_string(Condition c) {
   return "?";
 }
 
-/// Which conditions of SPEC A6 input side j meets, by their defining quantities, exactly.
+/// Which conditions of conventions §A6 input side j meets, by their defining quantities, exactly.
 /// With a = r_{n-2}, b = r_{n-1} and K'_j - K_n = -(r_j + a + b):
 ///   K'_j = K_n         r_j + a + b = 0
 ///   Q_j at infinity    a x (r_j + b) = 0   (ground line K_nK'_j parallel to the coupler line)
@@ -118,7 +118,7 @@ std::string summary(const ClaimOutcome& o) {
   return s;
 }
 
-/// One family of SPEC A6 at index j: the claims the construction breaks, with the names that may
+/// One family of conventions §A6 at index j: the claims the construction breaks, with the names that may
 /// be reported for them, and the claims that must still hold.
 struct Family {
   std::string file;

@@ -1,4 +1,4 @@
-// The counting claims of Dijksman (1966) sec. 3 (SPEC A7, A5.5) as the catalogue states them.
+// The counting claims of Dijksman (1966) sec. 3 (conventions §A7, §A5.5) as the catalogue states them.
 #include "dijksman1966_counting.h"
 
 #include <gtest/gtest.h>

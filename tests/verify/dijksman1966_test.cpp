@@ -1,4 +1,4 @@
-// The catalogue of Dijksman (1966) on the SPEC examples and on random polygons, and the
+// The catalogue of Dijksman (1966) on the worked examples (conventions §A8) and on random polygons, and the
 // comparator's ability to say "no": deliberately wrong formulas are fed through it.
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ const ClaimOutcome& find_claim(const PolygonCheck& c, const std::string& id) {
   throw std::runtime_error("claim not in check: " + id);
 }
 
-TEST(Dijksman1966, EveryTrueClaimHoldsExactlyOnSpecExamples) {
+TEST(Dijksman1966, EveryTrueClaimHoldsExactlyOnWorkedExamples) {
   GroundTruthEngine engine;
   for (const auto& ex : {test::spec_pentagon(), test::spec_hexagon()}) {
     const auto check = check_polygon(engine, dijksman1966::catalogue(), "spec", ex.polygon, ex.rates, Arithmetic::Exact);
@@ -35,7 +35,7 @@ TEST(Dijksman1966, EveryTrueClaimHoldsExactlyOnSpecExamples) {
   }
 }
 
-TEST(Dijksman1966, PentagonEq22TermsAndMixedTermMatchSpecA8) {
+TEST(Dijksman1966, PentagonEq22TermsAndMixedTermMatchConventionsA8) {
   GroundTruthEngine engine;
   const auto ex = test::spec_pentagon();
   const auto check = check_polygon(engine, dijksman1966::catalogue(), "p", ex.polygon, ex.rates, Arithmetic::Exact);
@@ -54,7 +54,7 @@ TEST(Dijksman1966, PentagonEq22TermsAndMixedTermMatchSpecA8) {
   EXPECT_EQ(find_claim(check, "dijksman1966.eq10").headline.rhs, "3147/1331");  // sum of four-bar parts
 }
 
-TEST(Dijksman1966, EveryErratumReadingFailsOnTheSpecPentagonOrHexagon) {
+TEST(Dijksman1966, EveryErratumReadingFailsOnTheA8PentagonOrHexagon) {
   GroundTruthEngine engine;
   std::map<std::string, bool> failed;
   for (const auto& ex : {test::spec_pentagon(), test::spec_hexagon()}) {
@@ -170,7 +170,7 @@ TEST(Dijksman1966MustFail, WrongFormulasAreRejectedInMp30) {
   expect_wrong_variants_rejected<Tracked<MpFloat<30>>>("mp30");
 }
 
-// The bundled pentagon (SPEC A8) in CLN long floats with running error bounds: every verdict is
+// The bundled pentagon (conventions §A8) in CLN long floats with running error bounds: every verdict is
 // the exact one. All 17 true claims hold; every erratum reading fails except
 // eq4.unsigned_ratio, which coincides with the truth where all ratios are positive (as exactly).
 TEST(Dijksman1966Mp, PentagonVerdictsInMp30AndMp1000AreTheExactOnes) {

@@ -1,7 +1,7 @@
 // The claims of Dijksman (1966), "Graphic method to determine the angular acceleration of links
-// of compound mechanisms", J. Mechanisms 1, 73-81 (seed 000), with the conventions and errata
-// of SPEC.md part A. They live as data in verify/claims/dijksman1966.yaml (one entry per
-// equation; the erratum readings of SPEC A5 beside the correct ones with `expected: fails`),
+// of compound mechanisms", J. Mechanisms 1, 73-81 (1966), with the conventions and errata
+// of docs/conventions.md part A. They live as data in verify/claims/dijksman1966.yaml (one entry per
+// equation; the erratum readings of conventions §A5 beside the correct ones with `expected: fails`),
 // embedded into this library at build time.
 //
 // Claim ids: dijksman1966.eqN (eq4 ... eq22, eq9a, eq6.sum), dijksman1966.sec3,

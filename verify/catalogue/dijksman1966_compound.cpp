@@ -1,4 +1,4 @@
-// Dijksman (1966) section 3 on compound mechanisms (SPEC.md A7): the multi-polygon solve
+// Dijksman (1966) section 3 on compound mechanisms (conventions §A7): the multi-polygon solve
 // compared with the mechanism engine, and the rank count.
 #include <fmt/format.h>
 
@@ -55,7 +55,7 @@ MechanismCatalogue dijksman1966_compound() {
       },
       applies});
   cat.claims.push_back(MechanismClaim{
-      ClaimInfo{"dijksman1966.compound.rank", "Dijksman (1966) section 3, SPEC.md A7",
+      ClaimInfo{"dijksman1966.compound.rank", "Dijksman (1966) section 3, docs/conventions.md §A7",
                 "the triangle relations, the input and two relations of (22) per polygon have full rank "
                 "L(L-1)/2 (every relative omega-dot is determined)",
                 Expectation::Holds, "", 4, 0},

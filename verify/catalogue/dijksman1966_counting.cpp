@@ -9,7 +9,7 @@ namespace linkproof::dijksman1966 {
 
 namespace {
 
-const char* const kSource = "Dijksman (1966) sec. 3; SPEC A7";
+const char* const kSource = "Dijksman (1966) sec. 3; docs/conventions.md §A7";
 
 /// No two consecutive sides parallel: every choice of the fixed side avoids the dead centre.
 bool has_no_dead_centre(const Polygon<Rational>& p) {
@@ -114,7 +114,7 @@ std::vector<CountClaim> count_claims_for_n(int n, std::uint64_t seed) {
 
 CompoundMechanism fig5_eightbar() {
   CompoundMechanism m;
-  m.name = "Fig. 5 eight-bar (SPEC A8)";
+  m.name = "Fig. 5 eight-bar (docs/conventions.md §A8)";
   m.links = 8;
   m.fixed_link = 0;
   m.input_link = 1;
@@ -141,7 +141,7 @@ std::vector<CountClaim> eightbar_claims(const CompoundMechanism& m, const std::v
   const int T = (links - 1) * (links - 2) / 2, all = links * (links - 1) / 2;
   const int polygons = static_cast<int>(loops.size());
   std::vector<CountClaim> out;
-  const std::string src = "Dijksman (1966) sec. 3, Fig. 5; SPEC A7";
+  const std::string src = "Dijksman (1966) sec. 3, Fig. 5; docs/conventions.md §A7";
 
   out.push_back(judge_rank("dijksman1966.fig5.velocity_rank",
                            fmt::format("triangle relations + input omega + (5), (6) of the {} loops determine all {} "
@@ -167,7 +167,7 @@ std::vector<CountClaim> eightbar_claims(const CompoundMechanism& m, const std::v
                               "the velocities are not determined by these loops, so the constants of (22) are unknown"));
   }
 
-  // Known answers of SPEC A8 (the bundled geometry).
+  // Known answers of conventions §A8 (the bundled geometry).
   const std::vector<std::string> omega_a8 = {"0", "1", "-7/317", "60/317", "159/317", "-20/317", "-279/317", "22/317"};
   if (static_cast<int>(omega_a8.size()) == links) {
     std::string observed;
@@ -175,23 +175,23 @@ std::vector<CountClaim> eightbar_claims(const CompoundMechanism& m, const std::v
     std::string expected;
     for (const auto& w : omega_a8) expected += (expected.empty() ? "" : ", ") + w;
     out.push_back(judge_value("dijksman1966.fig5.omega",
-                              "omega of links 0..7 relative to link 0 (SPEC A8 known answer)", expected, observed));
+                              "omega of links 0..7 relative to link 0 (docs/conventions.md §A8 known answer)", expected, observed));
   }
   const auto value_claim = [&](const char* id, int a, int b, const char* expected) {
     const auto v = c.relative_omega_dot(a, b);
-    out.push_back(judge_value(id, fmt::format("omega-dot_{{{},{}}} = {} (SPEC A8 known answer)", a, b, expected),
+    out.push_back(judge_value(id, fmt::format("omega-dot_{{{},{}}} = {} (docs/conventions.md §A8 known answer)", a, b, expected),
                               expected, v ? format_rational(*v) : "undetermined"));
   };
   value_claim("dijksman1966.fig5.omega_dot_4_0", 4, 0, "171151479/318550130");
   value_claim("dijksman1966.fig5.omega_dot_1_2", 1, 2, "8471254/159275065");
 
-  // SPEC A5.5: the sec. 3 count.
+  // conventions §A5.5: the sec. 3 count.
   const int remaining = all - c.with_input.rank;
   const int supplied = c.with_polygons ? c.with_polygons->rank - c.with_input.rank : -1;
   {
     CountClaim k = judge_value(
         "dijksman1966.sec3.count",
-        fmt::format("A5.5 reading: once the input is given, {} - ({} + 1) = {} relations remain, "
+        fmt::format("docs/conventions.md §A5.5 reading: once the input is given, {} - ({} + 1) = {} relations remain, "
                     "and the {} pentagons x 2 supply them ({})",
                     all, T, all - (T + 1), polygons, src),
         fmt::format("remaining {}, supplied {}", all - (T + 1), all - (T + 1)),
@@ -213,7 +213,7 @@ std::vector<CountClaim> eightbar_claims(const CompoundMechanism& m, const std::v
     out.push_back(std::move(k));
   }
   notes.push_back(fmt::format(
-      "SPEC A5.5 erratum of the seed's count (sec. 3): the seed says that with the input given \"28 - 21 = 7 "
+      "docs/conventions.md §A5.5 erratum of the paper's count (sec. 3): the paper says that with the input given \"28 - 21 = 7 "
       "independent relations [are] bound to be found\". Computed: the triangle relations have rank {}, the input "
       "raises it to {}, so {} - {} = {} relations remain, not 7; the 7 include the given input. The {} pentagons "
       "give {} x 2 relations, raising the rank from {} to {}.",

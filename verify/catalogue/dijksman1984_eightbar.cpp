@@ -1,4 +1,4 @@
-// Seed 004 (Dijksman 1984; SPEC.md D): the eight-bar of Fig. 1 (links 0..7; ternary 0, 2, 4, 6;
+// Dijksman (1984) (conventions §D): the eight-bar of Fig. 1 (links 0..7; ternary 0, 2, 4, 6;
 // bars 1, 3, 5, 7; joints named by their two links, e.g. "12"), the section-3 pole constructions
 // by line intersections, the relocation formulas (1'), (3'), (5'), (7'), (1'')-(7''), and the
 // erratum readings: the printed (5') (distance from P65 on the left) and the printed P60 (double
@@ -15,7 +15,7 @@ namespace linkproof::catalogues {
 namespace {
 
 using PP = PlanePoint<Rational>;
-const char* kSource = "Dijksman (1984), seed 004, SPEC.md D";
+const char* kSource = "Dijksman (1984), docs/conventions.md §D";
 const char* kJoints[] = {"01", "12", "23", "34", "45", "56", "67", "70", "26", "04"};
 
 // The joint between links a and b (names), or -1.
@@ -186,7 +186,7 @@ MechanismCatalogue dijksman1984_eightbar() {
                              Expectation::Holds, "", [](const MechanismContext& c) { return section3_poles(c, false); }));
   cat.claims.push_back(claim("dijksman1984.section3.P60.printed", "P60 = (67-70) x (63''-3''0) as printed (double primes)",
                              Expectation::Fails,
-                             "erratum (SPEC D): the double-primed bar 3'' of the Fig. 5 reduction (joint 3''2 relocated "
+                             "erratum (docs/conventions.md §D): the double-primed bar 3'' of the Fig. 5 reduction (joint 3''2 relocated "
                              "by (3''), pivot I35) does not pivot at I13, so the section-3 line 21-10 does not carry "
                              "P3''0; P60 must be built from 63' and 3'0",
                              [](const MechanismContext& c) { return section3_poles(c, true); }));
@@ -203,7 +203,7 @@ MechanismCatalogue dijksman1984_eightbar() {
   }
   cat.claims.push_back(claim("dijksman1984.eq5p.printed",
                              "(5') as printed: 1/(P65 P5'4) = 1/(P64 P54) + 1/(P64 I57) - 1/(P64 P65)", Expectation::Fails,
-                             "erratum (SPEC D): the left side must be measured from P64, like the right side",
+                             "erratum (docs/conventions.md §D): the left side must be measured from P64, like the right side",
                              [](const MechanismContext& c) { return relocation(c, kFormulas[2], true); }));
   return cat;
 }

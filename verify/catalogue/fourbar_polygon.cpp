@@ -1,4 +1,4 @@
-// Seed 001 (SPEC.md B): the textbook acceleration polygon of a four-bar, and its errata.
+// The acceleration-polygon course notes (conventions §B): the acceleration polygon of a four-bar, and its errata.
 #include <fmt/format.h>
 
 #include "linkproof/mechanism/fourbar_polygon.h"
@@ -57,7 +57,7 @@ void compare_vec(ClaimSides<Rational>& s, const std::string& label, const Vec2<R
 
 std::string text(const Vec2<Rational>& v) { return fmt::format("({}, {})", format_rational(v.x), format_rational(v.y)); }
 
-const char* kSource = "seed 001: four-bar acceleration polygon (SPEC.md B)";
+const char* kSource = "acceleration-polygon course notes: four-bar acceleration polygon (docs/conventions.md §B)";
 
 }  // namespace
 
@@ -112,7 +112,7 @@ MechanismCatalogue fourbar_polygon() {
         is_fourbar);
   claim("seed001.alpha4.printed_R_BO2",
         "the printed alpha4 = A^t_B . R'_BO2 / |R_BO2|^2 (R_BO2 = B - O2) equals the engine's alpha4",
-        Expectation::Fails, "erratum: R_BO2 is R_BO4 (SPEC.md B)",
+        Expectation::Fails, "erratum: R_BO2 is R_BO4 (docs/conventions.md §B)",
         [](const MechanismContext& c) {
           const FourBarCase k = make_case(c);
           const Linkage& g = c.scene.linkage;
@@ -139,7 +139,7 @@ MechanismCatalogue fourbar_polygon() {
         has_coupler_point);
   claim("seed001.coupler_point.printed",
         "the printed A_P = -omega2^2 R_AO2 + omega2 R'_AO2 - omega3^2 R_PA + omega3 R'_PA equals the engine's",
-        Expectation::Fails, "erratum: omega2, omega3 are printed where alpha2, alpha3 belong (SPEC.md B)",
+        Expectation::Fails, "erratum: omega2, omega3 are printed where alpha2, alpha3 belong (docs/conventions.md §B)",
         [](const MechanismContext& c) {
           const FourBarCase k = make_case(c);
           const auto& p = k.polygon;

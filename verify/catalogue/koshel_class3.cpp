@@ -1,4 +1,4 @@
-// Seed 003 (Koshel et al., SPEC.md C): the eight-link class-III mechanism with two sliders.
+// Koshel et al. (conventions §C): the eight-link class-III mechanism with two sliders.
 // Link names are the paper's: crank "1" (driven, omega1 constant), rocker "5" (the driver the
 // paper switches to), frame "0"; joint "A" is the crank pin.
 #include <fmt/format.h>
@@ -10,7 +10,7 @@ namespace linkproof::catalogues {
 
 namespace {
 
-const char* kSource = "Koshel et al. (seed 003), SPEC.md C";
+const char* kSource = "Koshel et al., docs/conventions.md §C";
 
 MechanismSolution<Rational> solve_vector(const MechanismScene& s, const Linkage& g, const std::vector<MechanismInput>& in,
                                          bool coriolis = true) {
@@ -92,7 +92,7 @@ MechanismCatalogue koshel_class3() {
                 "(|a_A|/|a_A trial|)^2 epsilon_i(trial)^2 = epsilon_i^2)",
                 Expectation::Fails,
                 "invalid step: the plan is affine in epsilon5 (a = a0 + epsilon5 b, a0 fixed by the velocities), so "
-                "one scale factor cannot map it to the true plan (SPEC.md C)",
+                "one scale factor cannot map it to the true plan (docs/conventions.md §C)",
                 4, 0},
       [](const MechanismContext& c) {
         const Linkage& g = c.scene.linkage;
@@ -138,7 +138,7 @@ MechanismCatalogue koshel_class3() {
       ClaimInfo{"koshel.coriolis.dropped", kSource,
                 "the same without the Coriolis term gives the relative epsilon_ik unchanged",
                 Expectation::Fails,
-                "the Coriolis term of a prismatic pair is needed as soon as the guide moves (SPEC.md C, last bullet)", 4,
+                "the Coriolis term of a prismatic pair is needed as soon as the guide moves (docs/conventions.md §C, prismatic pair)", 4,
                 0},
       [](const MechanismContext& c) { return inverted(c, false); }, has_moving_guide_after_inversion});
   for (auto& step : koshel_printed_chain()) cat.claims.push_back(std::move(step));

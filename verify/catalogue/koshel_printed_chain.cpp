@@ -1,4 +1,4 @@
-// Seed 003's printed arithmetic chain, eqs. (2)-(17), step by step (SPEC.md C: every step is
+// Koshel et al.'s printed arithmetic chain, eqs. (2)-(17), step by step (conventions §C: every step is
 // consistent except (7), 25^2 * 0.085 = 53.125, printed 52.9).
 //
 // Each step recomputes the printed result exactly from the printed inputs (the paper's data:
@@ -8,7 +8,7 @@
 // half a unit of its last digit, so the step is consistent iff |computed - printed| <= 10^-d / 2.
 // The comparison is exact: its right side is the printed value when the computed value lies in
 // that interval, and the computed value otherwise (then the residual is the excess, never 0).
-// Steps (18) and (19) are not claims: the OCR of their printed results is illegible in the seed.
+// Steps (18) and (19) are not claims: the OCR of their printed results is illegible in the text available.
 #include <fmt/format.h>
 
 #include "mechanism_catalogues.h"
@@ -17,7 +17,7 @@ namespace linkproof::catalogues {
 
 namespace {
 
-const char* kSource = "Koshel et al. (seed 003), printed arithmetic, SPEC.md C";
+const char* kSource = "Koshel et al., printed arithmetic, docs/conventions.md §C";
 
 struct PrintedStep {
   const char* id;         ///< e.g. "koshel.eq7"
@@ -92,7 +92,7 @@ std::vector<MechanismClaim> koshel_printed_chain() {
       PrintedStep as_printed = s;
       as_printed.printed = "52.9";
       claims.push_back(step_claim(as_printed, Expectation::Fails,
-                                  "SPEC.md C: 25^2 * 0.085 = 53.125, printed 52.9 (the only inconsistent step); "
+                                  "docs/conventions.md §C: 25^2 * 0.085 = 53.125, printed 52.9 (the only inconsistent step); "
                                   "n_BK = 52.9 mm carries the error into the plan",
                                   ".printed"));
       continue;

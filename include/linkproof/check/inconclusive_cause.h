@@ -7,7 +7,7 @@
 // on a fresh context (claims/polygon_context.h), so that what is computed afterwards is exactly
 // what this claim reads, and the quantities read are searched in dependency order:
 //   1. D = r_{n-2} x r_{n-1}, which the engine, the closed forms, the four-bar truths and the
-//      construction all divide by (near the dead centre every route loses, SPEC A6);
+//      construction all divide by (near the dead centre every route loses, docs/conventions.md §A6);
 //   2. the construction of each four-bar j it reads: Q_j, P'_j, i_{n-1,j}, i_{n-2,j},
 //      cot beta_j, cot gamma_j, lambda_j, mu_j (near a pole of the construction only the
 //      construction loses: the closed forms and the engine keep full accuracy).

@@ -33,7 +33,7 @@
 
 namespace linkproof {
 
-/// How a claim reads the paper: the construction's reading and the sign of phi (SPEC A5).
+/// How a claim reads the paper: the construction's reading and the sign of phi (docs/conventions.md §A5).
 struct ClaimReading {
   ConstructionReading construction;
   bool signed_phi = true;
@@ -338,7 +338,7 @@ class ClaimEvaluator {
       case Q::RhoCompanion: {
         const ClosedForms<T>& cf = c_.closed().get();
         if (reading_.signed_phi) return constant(n.quantity == Q::CotPhi ? cf.cot_phi : n.quantity == Q::Rho ? cf.rho : cf.rho_companion);
-        // The unsigned drawn angle |phi| (erratum A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
+        // The unsigned drawn angle |phi| (erratum §A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
         const T abs_d = abs_value(cf.D);
         const Vec2<T> a = c_.r(c_.n - 2), bb = c_.r(c_.n - 1);
         return constant((n.quantity == Q::CotPhi ? dot(a, bb) : norm2(n.quantity == Q::Rho ? a : bb)) / abs_d);

@@ -60,7 +60,7 @@ class PolygonContext {
   const Defined<PolygonMotion<T>>& truth() const {
     return cached(truth_, [&] { return engine_->motion(polygon, rates); });
   }
-  /// The closed forms of SPEC A3.
+  /// The closed forms of docs/conventions.md §A3.
   const Defined<ClosedForms<T>>& closed() const {
     return cached(closed_, [&] { return compute_closed_forms(polygon); });
   }
@@ -75,7 +75,7 @@ class PolygonContext {
     solve_terms();
     return *velocity_coefficients_;
   }
-  /// The construction of every four-bar j = 1..n-3 (at [j-1]) under a reading (SPEC A5; the
+  /// The construction of every four-bar j = 1..n-3 (at [j-1]) under a reading (docs/conventions.md §A5; the
   /// default is the correct reading).
   const std::vector<FourBarConstruction<T>>& construction_for(const ConstructionReading& r = {}) const {
     const int key = r.displaced_start | r.beta_towards_p_prime << 1 | r.beta_ccw_positive << 2 | r.signed_ratios << 3;

@@ -1,7 +1,7 @@
 // RatePoly<T>: a polynomial in the input rates omega_j and omega-dot_j (j = 1..n-3) with
 // coefficients in T. Every claim side is evaluated to one, so that the comparison of two sides
 // is made both as a whole (at the given rates) and term by term (per monomial): a wrong
-// coefficient of omega_1 omega_2 is named, not just a wrong total (SPEC A4, last item).
+// coefficient of omega_1 omega_2 is named, not just a wrong total (docs/conventions.md §A4, last item).
 //
 // Division is allowed only by a rate-free polynomial: the paper's formulas are polynomial in
 // the rates, and a claim that is not is reported as such.

@@ -2,11 +2,11 @@
 // it is indexed. Documented for users in README.md ("Claim files"); `linkproof check-claim
 // --vocabulary` prints this table.
 //
-// Indices follow the paper (SPEC A1): inputs j = 1..n-3 (relative to the fixed side n), sides
+// Indices follow the paper (docs/conventions.md §A1): inputs j = 1..n-3 (relative to the fixed side n), sides
 // and joints k = 1..n. In an index, `n` is the number of sides and j, l are bound by the sums:
 //   sum_j(e)         sum over inputs j = 1..n-3
-//   sum_pairs(e)     sum over ordered pairs j != l (each unordered pair twice; SPEC A3)
-//   sum_pairs_lt(e)  sum over j < l only (a tempting misreading: SPEC A5.6)
+//   sum_pairs(e)     sum over ordered pairs j != l (each unordered pair twice; docs/conventions.md §A3)
+//   sum_pairs_lt(e)  sum over j < l only (a tempting misreading: docs/conventions.md §A5.6)
 // `for_each: j` in a claim makes j free: the claim is then one statement per input j (eq. 4).
 #pragma once
 
@@ -30,7 +30,7 @@ struct Word {
   std::string name;
   WordKind kind;
   int arity;            ///< number of arguments (0 for symbols)
-  std::string meaning;  ///< one line, with the paper's notation and SPEC reference
+  std::string meaning;  ///< one line, with the paper's notation and docs/conventions.md section
 };
 
 /// Every word, in the order of the documentation.

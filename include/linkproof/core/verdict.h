@@ -21,7 +21,7 @@ std::string_view to_string(Verdict v);
 /// Undefined, Inconclusive; Holds only if every part holds.
 Verdict combine(Verdict a, Verdict b);
 
-/// What a claim is expected to do: a true statement holds; an erratum reading (the seed's
+/// What a claim is expected to do: a true statement holds; an erratum reading (the paper's
 /// printed or a tempting wrong reading) is expected to fail on generic configurations.
 enum class Expectation { Holds, Fails };
 std::string_view to_string(Expectation e);

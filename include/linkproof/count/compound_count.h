@@ -1,11 +1,11 @@
 // Counting and solving the rate relations of a compound mechanism built of polygons
-// (Dijksman 1966, sec. 3 and Fig. 5; SPEC A7, A8).
+// (Dijksman 1966, sec. 3 and Fig. 5; docs/conventions.md §A7, §A8).
 //
 // A mechanism here is a set of links 0..m-1 joined by turning pairs at known positions, one
 // fixed link and one input link with given omega and omega-dot relative to the fixed link. The
 // analyst names loops of links ("1-2-3-4-0"): polygon sides are the links in that order, the
 // joint between consecutive links of the loop is a vertex, and the **last** link of the loop is
-// side n, the one the formulas take as fixed (SPEC A1). Side j runs from the joint with the
+// side n, the one the formulas take as fixed (docs/conventions.md §A1). Side j runs from the joint with the
 // previous link to the joint with the next one.
 //
 // count_compound ranks, over the m(m-1)/2 relative rates:

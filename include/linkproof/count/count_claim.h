@@ -60,7 +60,7 @@ CountClaim count_error(std::string id, std::string statement, std::string reason
 struct CountReport {
   std::string subject;              ///< "n = 3..60", "eight-bar of Fig. 5", ...
   std::vector<CountClaim> claims;
-  std::vector<std::string> notes;   ///< statements for the reader (e.g. the A5.5 erratum)
+  std::vector<std::string> notes;   ///< statements for the reader (e.g. the docs/conventions.md §A5.5 erratum)
   bool strict = false;              ///< --strict: holds_on_samples is not as expected
   /// 0 every claim as expected, 1 otherwise.
   int exit_status() const;

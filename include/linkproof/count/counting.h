@@ -1,4 +1,4 @@
-// Counting relations between relative angular rates (Dijksman 1966, sec. 3; SPEC A7).
+// Counting relations between relative angular rates (Dijksman 1966, sec. 3; docs/conventions.md §A7).
 //
 // Every count here is a computed exact rank (core/row_echelon.h over CLN rationals), never a
 // formula: the formulas of the paper are what the ranks are judged against (count_claim.h).
@@ -52,10 +52,10 @@ struct FixedSideFamily {
 };
 
 /// The angular velocity of every side of `p` relative to side n (0-based; entry n-1 is 0), by
-/// the closed forms of SPEC A2 from the inputs. Throws UndefinedQuantity at the dead centre.
+/// the closed forms of docs/conventions.md §A2 from the inputs. Throws UndefinedQuantity at the dead centre.
 std::vector<Rational> side_velocities(const Polygon<Rational>& p, const InputRates<Rational>& in);
 
-/// The three families of SPEC A7 for polygon `p` (n >= 3; side j is body j-1) with side
+/// The three families of docs/conventions.md §A7 for polygon `p` (n >= 3; side j is body j-1) with side
 /// velocities `omega` (one per side, any common reference). Throws UndefinedQuantity if some
 /// choice of fixed side is a dead centre.
 std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>& p,

@@ -1,4 +1,4 @@
-// Closed forms of SPEC.md A2/A3 (rational functions of the side vectors), generic over T.
+// Closed forms of docs/conventions.md §A2, §A3 (rational functions of the side vectors), generic over T.
 // They are the second route to every quantity of the construction, defined everywhere except
 // at the dead centre D = r_{n-2} x r_{n-1} = 0, where they throw UndefinedQuantity("D").
 #pragma once
@@ -17,7 +17,7 @@ struct PolygonMotion {
   std::vector<T> omega, omega_dot;
 };
 
-/// Closed forms of the construction's ratios and of the mixed-term coefficients (SPEC A3/A4).
+/// Closed forms of the construction's ratios and of the mixed-term coefficients (docs/conventions.md §A3, §A4).
 template <class T>
 struct ClosedForms {
   T D;                 ///< r_{n-2} x r_{n-1}
@@ -57,7 +57,7 @@ ClosedForms<T> compute_closed_forms(const Polygon<T>& p) {
   return c;
 }
 
-/// The ground truth by the closed forms of SPEC A2 (route "closed forms"): omega and omega-dot
+/// The ground truth by the closed forms of docs/conventions.md §A2 (route "closed forms"): omega and omega-dot
 /// of sides n-2 and n-1 from the inputs. Throws at the dead centre.
 template <class T>
 PolygonMotion<T> compute_closed_form_motion(const Polygon<T>& p, const InputRates<T>& in) {

@@ -1,5 +1,5 @@
 // The paper's graphic construction for side j of the n-side polygon (Dijksman 1966, sec. 2;
-// SPEC.md A3), generic over the scalar type.
+// docs/conventions.md §A3), generic over the scalar type.
 //
 // Four-bar j is K'_j K_{n-2} K_{n-1} K_n: input r_j moved parallel so that it ends in K_{n-2},
 // coupler r_{n-2}, output r_{n-1}, fixed pivots K'_j and K_n.
@@ -22,9 +22,9 @@
 //
 // construct_four_bar names what the steps found: each quantity is Defined<>, and where the
 // construction breaks (Q_j or P'_j at infinity, a null ray, beta_j = 0) it names the quantity
-// and the reason (SPEC A6), and the rest goes on.
+// and the reason (docs/conventions.md §A6), and the rest goes on.
 //
-// ConstructionReading selects the erratum readings of SPEC A5 (the seed's printed forms and
+// ConstructionReading selects the erratum readings of docs/conventions.md §A5 (the paper's printed forms and
 // tempting misreadings), so that each can be evaluated by the same code and shown to fail.
 #pragma once
 
@@ -36,17 +36,17 @@
 
 namespace linkproof {
 
-/// How the construction is read. The default is the correct reading of SPEC A3.
+/// How the construction is read. The default is the correct reading of docs/conventions.md §A3.
 struct ConstructionReading {
-  /// false: the seed's printed K_j instead of the displaced K'_j (A5.1): the whole four-bar is
+  /// false: the paper's printed K_j instead of the displaced K'_j (§A5.1): the whole four-bar is
   /// built on the undisplaced joint, i.e. Q_j on line K_nK_j and P_j on line K_jK_{n-2}.
   bool displaced_start = true;
   /// false: beta_j measured towards P_j = line(K_{n-1}, K_n) ^ line(K_j, K_{j+1}) (the
-  /// undisplaced side) instead of P'_j, as printed in (9a) (A5.2).
+  /// undisplaced side) instead of P'_j, as printed in (9a) (§A5.2).
   bool beta_towards_p_prime = true;
-  /// false: beta_j > 0 iff the triangle is clockwise (the reversed sign rule, A5.6).
+  /// false: beta_j > 0 iff the triangle is clockwise (the reversed sign rule, §A5.6).
   bool beta_ccw_positive = true;
-  /// false: unsigned segment ratios |QK'|/|QK_n| (A5.6).
+  /// false: unsigned segment ratios |QK'|/|QK_n| (§A5.6).
   bool signed_ratios = true;
 };
 
@@ -95,7 +95,7 @@ struct FourBarSteps {
   T mu{};           ///< mu_j = i_{n-2,j}(1 - i_{n-2,j}) cot gamma_j
   StepStatus q_status = StepStatus::not_reached;
   StepStatus p_prime_status = StepStatus::not_reached;
-  StepStatus p_undisplaced_status = StepStatus::not_reached;  ///< P_j, reading A5.2 only
+  StepStatus p_undisplaced_status = StepStatus::not_reached;  ///< P_j, reading §A5.2 only
   StepStatus i_out_status = StepStatus::not_reached;
   StepStatus i_cpl_status = StepStatus::not_reached;
   StepStatus beta_status = StepStatus::not_reached;
@@ -105,11 +105,11 @@ struct FourBarSteps {
 };
 
 /// The construction of the four-bar with input side r_j starting at K_j, in `f`'s polygon
-/// (SPEC A3), step by step: the one implementation of the construction. construct_four_bar
+/// (docs/conventions.md §A3), step by step: the one implementation of the construction. construct_four_bar
 /// names its undefined quantities; the construction route reads its coefficients directly.
-/// Of `reading`, only the misreadings that move a point are applied here (A5.1 K_j for K'_j,
-/// A5.2 beta_j towards P_j); ratios are directed and beta_j is ccw-positive, and lambda_j, mu_j
-/// are formed from those (construct_four_bar applies the A5.6 misreadings of the values).
+/// Of `reading`, only the misreadings that move a point are applied here (§A5.1 K_j for K'_j,
+/// §A5.2 beta_j towards P_j); ratios are directed and beta_j is ccw-positive, and lambda_j, mu_j
+/// are formed from those (construct_four_bar applies the §A5.6 misreadings of the values).
 ///
 /// Written for a loop over j in double (numerics/routes.h): always inlined, the statuses kept in
 /// locals and stored once, so that the result lives in registers. (Through memory, GCC merges
@@ -120,11 +120,11 @@ template <class T>
                                                                        const ConstructionReading& reading = {}) {
   constexpr StepStatus ok = StepStatus::defined, skipped = StepStatus::not_reached;
   FourBarSteps<T> s;
-  // K'_j = K_{n-2} - r_j (SPEC A3; A5.1: the seed's printed K_j).
+  // K'_j = K_{n-2} - r_j (docs/conventions.md §A3; §A5.1: the paper's printed K_j).
   s.k_prime = reading.displaced_start ? f.k_n2 - r_j : k_j;
   const Vec2<T>& kp = s.k_prime;
 
-  // Q_j = line(K_{n-2}, K_{n-1}) ^ line(K_n, K'_j); the ground line needs K'_j != K_n (SPEC A6).
+  // Q_j = line(K_{n-2}, K_{n-1}) ^ line(K_n, K'_j); the ground line needs K'_j != K_n (docs/conventions.md §A6).
   const Vec2<T> ground_dir = kp - f.k_n;
   const StepStatus q = is_zero_vector(ground_dir) ? StepStatus::pivots_coincide
                                                   : intersect_lines(f.k_n2, f.coupler_dir, f.k_n, ground_dir, s.q);
@@ -136,7 +136,7 @@ template <class T>
   const StepStatus i_cpl = p == ok ? directed_ratio(f.k_n2, kp, s.p_prime, s.i_cpl) : skipped;
 
   // cot beta_j = (QK . QP) / (QK x QP), QK = K_{n-1} - Q_j, QP = P'_j - Q_j: beta_j > 0 iff
-  // P'_j -> Q_j -> K_{n-1} is ccw (eq. 9a). A5.2 measures towards P_j = line(K_{n-1}, K_n) ^
+  // P'_j -> Q_j -> K_{n-1} is ccw (eq. 9a). §A5.2 measures towards P_j = line(K_{n-1}, K_n) ^
   // line(K_j, K_{j+1}) instead (after P'_j, as the named construction reports P'_j first).
   StepStatus p_undisplaced = skipped, beta = skipped;
   if (p == ok) {
@@ -186,7 +186,7 @@ FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j, const C
   const FourBarSteps<T> s = construct_four_bar_steps(f, poly.joint(j), poly.side(j), reading);
   const auto sj = [j] { return std::to_string(j); };
   const auto kp_name = [&] { return reading.displaced_start ? "K'_" + sj() : "K_" + sj(); };
-  // A5.6: unsigned segment ratios (abs_value throws for a symbolic value: that, too, is named).
+  // §A5.6: unsigned segment ratios (abs_value throws for a symbolic value: that, too, is named).
   const auto ratio = [&](const T& r) { return reading.signed_ratios ? r : abs_value(r); };
 
   FourBarConstruction<T> c{j, s.k_prime,
@@ -223,7 +223,7 @@ FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j, const C
     (void)c.q.get();
     require_angle(s.beta_status, [&] { return "beta_" + sj(); },
                   [&] { return "rays Q_" + sj() + "K_{n-1} and Q_" + sj() + "P'_" + sj(); });
-    return reading.beta_ccw_positive ? s.cot_beta : -s.cot_beta;  // A5.6: the reversed sign rule
+    return reading.beta_ccw_positive ? s.cot_beta : -s.cot_beta;  // §A5.6: the reversed sign rule
   });
   c.cot_gamma = Defined<T>::attempt([&] {
     (void)c.p_prime.get();

@@ -1,5 +1,5 @@
 // The three elementary steps of the paper's graphic construction (Dijksman 1966, sec. 2;
-// SPEC.md A3), each written once, generic over the scalar type T:
+// docs/conventions.md §A3), each written once, generic over the scalar type T:
 //   intersect_lines     the point where two lines meet (Q_j, P'_j, P_j)
 //   directed_ratio      XA / XB of directed segments on one line (i_{n-1,j}, i_{n-2,j})
 //   cot_signed_angle    cot of the signed angle at a vertex (beta_j, gamma_j)
@@ -7,7 +7,7 @@
 //   * a plain form that writes the result and returns a StepStatus: no exception, no string,
 //     no allocation (the hot path of the construction route, numerics/routes.h);
 //   * a throwing form (`construct_...`, `compute_...`) that names the undefined quantity and
-//     why (SPEC A6): the `_lazy` variants take callables for the names, so that strings are made
+//     why (docs/conventions.md §A6): the `_lazy` variants take callables for the names, so that strings are made
 //     only when a quantity is undefined.
 // Every step tests its divisors with linkproof::is_zero: exactly for exact and symbolic T (for
 // symbolic T each test is recorded as a place where the result may fail, core/symbolic_scalar.h),
@@ -27,7 +27,7 @@ enum class StepStatus : unsigned char {
   null_direction,   ///< a line or a ray is spanned by two coincident points
   degenerate,       ///< parallel lines (point at infinity), a zero-length reference segment,
                     ///< or collinear rays (angle 0 or pi)
-  pivots_coincide,  ///< K'_j = K_n: the ground line of four-bar j is undefined (SPEC A6)
+  pivots_coincide,  ///< K'_j = K_n: the ground line of four-bar j is undefined (docs/conventions.md §A6)
   not_reached,      ///< not run: an input of the step is itself undefined
 };
 

@@ -1,4 +1,4 @@
-// The closed n-side polygon of Dijksman (1966), SPEC.md A1.
+// The closed n-side polygon of Dijksman (1966), docs/conventions.md §A1.
 //
 // Joints K_1..K_n; side r_j = K_{j+1} - K_j (K_{n+1} = K_1), so sum r_j = 0 (eq. 1). K_j is the
 // start of r_j; side n (K_n -> K_1) is fixed. Indices in this API are the paper's, 1-based.
@@ -25,7 +25,7 @@ class Polygon {
   Vec2<T> side(int j) const { return joint(j + 1) - joint(j); }
   const std::vector<Vec2<T>>& joints() const { return joints_; }
 
-  /// D = r_{n-2} x r_{n-1}; the mechanism's dead centre is D = 0 (SPEC A2).
+  /// D = r_{n-2} x r_{n-1}; the mechanism's dead centre is D = 0 (docs/conventions.md §A2).
   T dead_centre_determinant() const { return cross(side(n() - 2), side(n() - 1)); }
 
   template <class U>

@@ -1,5 +1,5 @@
 // Plane vectors over any scalar type T (see core/scalar.h).
-// Conventions (SPEC.md): a x b = a_x b_y - a_y b_x; J a = (-a_y, a_x) turns a by +90 degrees.
+// Conventions (docs/conventions.md, Notation): a x b = a_x b_y - a_y b_x; J a = (-a_y, a_x) turns a by +90 degrees.
 #pragma once
 
 #include "linkproof/core/scalar.h"

@@ -14,7 +14,7 @@
 //       lhs: omega_dot_out                             # expressions, vocabulary.h
 //       rhs: sum_j(lambda[j]*omega[j]^2 + i_out[j]*omega_dot[j]) - ...
 //
-// Readings (SPEC A5): undisplaced_start (K_j for K'_j), beta_towards_p (P_j for P'_j in
+// Readings (docs/conventions.md §A5): undisplaced_start (K_j for K'_j), beta_towards_p (P_j for P'_j in
 // beta_j), reversed_beta (beta_j > 0 iff clockwise), unsigned_ratios (lengths, not directed
 // segments), unsigned_phi (the drawn angle |phi|).
 //

@@ -1,10 +1,10 @@
 // Polygon scene files: one closed n-side polygon of Dijksman (1966) and its input rates, read
-// from YAML with every number kept exact (SPEC.md A1 for the notation).
+// from YAML with every number kept exact (docs/conventions.md §A1 for the notation).
 //
 // Schema (all fields required unless marked optional):
 //
 //   name: pentagon                 # non-empty string: the scene's name in reports
-//   description: SPEC.md A8 ...    # optional string, free text
+//   description: docs/conventions.md §A8 ...    # optional string, free text
 //   polygon:
 //     joints: [[0, 0], [1, 4], [5, 5], [7, 1], [3, -2]]  # K_1..K_n; side n (K_n -> K_1) is fixed
 //     omega: [2, -1]               # omega_{j,n},     j = 1..n-3 (rad per unit time, ccw > 0)

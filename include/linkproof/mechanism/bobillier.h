@@ -1,4 +1,4 @@
-// Bobillier's construction of a curvature centre (Dijksman 1984, section 5, Fig. 6; SPEC.md D),
+// Bobillier's construction of a curvature centre (Dijksman 1984, section 5, Fig. 6; docs/conventions.md §D),
 // by line intersections only, over any scalar type T.
 //
 // Given two points A, B of the moving plane with their curvature centres alpha, beta in the
@@ -11,7 +11,7 @@
 //   (d) Q_AC = line(A, C) x q_AC
 //   (e) gamma = line(P, C) x line(alpha, Q_AC)            the centre sought
 // The mirrored reading of (c) (the angle measured in the opposite sense, direction
-// (C - P) conj(Q_AB - P)(B - P)) is an erratum reading: it gives a wrong gamma (SPEC D).
+// (C - P) conj(Q_AB - P)(B - P)) is an erratum reading: it gives a wrong gamma (docs/conventions.md §D).
 // Degenerate cases are values, not exceptions: C on the line PA (step (d) intersects a line with
 // itself) -> the B/beta version (the roles of A and B exchanged); C on both PA and PB, the pole
 // or Q_AB at infinity or undefined -> Undefined naming the step; gamma at infinity (C on the
@@ -65,7 +65,7 @@ BobillierConstruction<T> construct_bobillier_once(const Vec2<T>& A, const Vec2<T
   return r;
 }
 
-/// As drawn; the B/beta version when C lies on the line PA (SPEC D).
+/// As drawn; the B/beta version when C lies on the line PA (docs/conventions.md §D).
 template <class T>
 BobillierConstruction<T> construct_bobillier(const Vec2<T>& A, const Vec2<T>& alpha, const Vec2<T>& B,
                                              const Vec2<T>& beta, const Vec2<T>& C, bool mirrored = false) {

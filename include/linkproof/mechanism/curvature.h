@@ -1,4 +1,4 @@
-// Second-order geometry of a relative plane motion (SPEC.md D), over any scalar type T: the
+// Second-order geometry of a relative plane motion (docs/conventions.md §D), over any scalar type T: the
 // path curvature centre of a point, the inflection circle, the pole normal and tangent, and the
 // two sides of Euler-Savary's equation on a ray from the pole.
 //

@@ -17,7 +17,7 @@
 //   curvature.euler_savary.rays                holds  Euler-Savary on rays from the pole in fixed directions,
 //                                                     S_b the analytic centre (also: S_b lies on the ray)
 //   curvature.bobillier                        holds  steps (a)-(e) give the analytic centre of each request
-//   curvature.bobillier.mirrored_step_c        fails  erratum reading of step (c) (SPEC D)
+//   curvature.bobillier.mirrored_step_c        fails  erratum reading of step (c) (docs/conventions.md §D)
 //   joint_joining.first_order.velocities_preserved        holds
 //   joint_joining.first_order.accelerations_preserved     fails (first order keeps velocities only)
 //   joint_joining.second_order.velocities_preserved       holds

@@ -1,4 +1,4 @@
-// Dijksman (1966) on a compound mechanism (seed 000 section 3, SPEC.md A7): all relative angular
+// Dijksman (1966) on a compound mechanism (its section 3, docs/conventions.md §A7): all relative angular
 // velocities and accelerations from a few polygons, without solving the mechanism as a whole.
 //
 // Unknowns: omega_ik and omega-dot_ik for every pair of links i < k (omega_ki = -omega_ik).
@@ -15,7 +15,7 @@
 //   companion omega-dot_{n-2,n} = sum_j (mu_j omega_j^2 + i_{n-2,j} omega-dot_j)
 //             + cot phi S_2 + (|r_{n-1}|^2/D) S_1
 // (S_1, S_2 over ordered pairs j != l; omega_j = omega_{j,n} from the velocity solve). The
-// coefficients are the closed forms of SPEC A3 (geometry/closed_forms.h). The fixed side is the
+// coefficients are the closed forms of docs/conventions.md §A3 (geometry/closed_forms.h). The fixed side is the
 // ground where the loop contains it, else the first side that is not a dead centre.
 // Applies to revolute-only linkages of mobility 1 with one link input; polygons need n >= 4.
 #pragma once

@@ -1,4 +1,5 @@
-// The acceleration polygon of a four-bar (seed 001, SPEC.md B), over any scalar type T.
+// The acceleration polygon of a four-bar (the acceleration-polygon course notes,
+// docs/conventions.md §B), over any scalar type T.
 //
 // Four-bar O2-A-B-O4: crank 2 (O2 -> A), coupler 3 (A -> B), rocker 4 (O4 -> B), frame 1.
 // R_AO2 = A - O2, R_BA = B - A, R_BO4 = B - O4, R-breve = J R.
@@ -63,7 +64,7 @@ FourBarPolygon<T> construct_fourbar_polygon(const Vec2<T>& O2, const Vec2<T>& A,
   p.A_B_t = a4 * perp(p.R_BO4);
   p.A_A = p.A_A_n + p.A_A_t;
   p.A_B = p.A_B_n + p.A_B_t;
-  // The projection formulas of the seed.
+  // The projection formulas of the course notes.
   p.alpha3 = dot(p.A_BA_t, perp(p.R_BA)) / norm2(p.R_BA);
   p.alpha4 = dot(p.A_B_t, perp(p.R_BO4)) / norm2(p.R_BO4);
   return p;

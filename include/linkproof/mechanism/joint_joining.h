@@ -1,4 +1,4 @@
-// Joint-joining (linkage reduction; Dijksman 1984, sections 2-4; SPEC.md D).
+// Joint-joining (linkage reduction; Dijksman 1984, sections 2-4; docs/conventions.md §D).
 //
 // A ternary link t carries two bars b1, b2 (binary links with two revolute joints): bar b has its
 // near joint N_b on t and its far joint F_b on another link x_b. The bar lines meet at

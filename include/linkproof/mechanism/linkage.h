@@ -1,4 +1,4 @@
-// A planar linkage of rigid links connected by revolute and prismatic pairs (SPEC.md A7, C):
+// A planar linkage of rigid links connected by revolute and prismatic pairs (docs/conventions.md §A7, §C):
 // the link-joint graph, its mobility count and an independent loop basis.
 //
 // Model (one instant):

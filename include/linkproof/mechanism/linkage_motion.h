@@ -5,7 +5,7 @@
 //   v_P = v_O + omega_l J (P - O)
 //   a_P = a_O + omega-dot_l J (P - O) - omega_l^2 (P - O)
 // Prismatic pair (guide g, slider s, direction u fixed in g, sliding rates sigma-dot, sigma-ddot;
-// SPEC.md C last bullet): the slider point P_s and the guide point P_g coincide now and
+// docs/conventions.md §C, prismatic pair): the slider point P_s and the guide point P_g coincide now and
 //   v_{P_s} = v_{P_g} + sigma-dot u
 //   a_{P_s} = a_{P_g} + sigma-ddot u + 2 omega_g sigma-dot J u        (Coriolis term)
 // and omega_s = omega_g, omega-dot_s = omega-dot_g.

@@ -9,7 +9,7 @@
 //   mechanism.routes_agree     the GiNaC closure and the rigid-body vector formulas give the
 //                              same q-dot and q-ddot (two independent derivations);
 //   mechanism.driver_inversion (mobility 1) taking any other moving link as the driver, with its
-//                              rates from the solution, gives the same motion (SPEC C: the
+//                              rates from the solution, gives the same motion (docs/conventions.md §C: the
 //                              results do not depend on which link drives).
 // Paper-specific claims come from catalogues (verify/catalogue), selected by the scene's
 // `catalogue` field. Claims are evaluated in exact arithmetic; --arith double solves the

@@ -8,7 +8,7 @@
 //   sum_i r_i + sum_prismatic (+-) sigma u = 0,
 //   d/dt:     sum_i omega_{l_i} J r_i + sum (+-) sigma-dot u = 0
 //   d2/dt2:   sum_i (omega-dot_{l_i} J r_i - omega_{l_i}^2 r_i)
-//             + sum (+-) (sigma-ddot u + 2 omega_guide sigma-dot J u) = 0   (Coriolis, SPEC C)
+//             + sum (+-) (sigma-ddot u + 2 omega_guide sigma-dot J u) = 0   (Coriolis, docs/conventions.md §C)
 // and per prismatic pair omega_slider - omega_guide = 0 (and its derivative).
 // No angles appear: with rational joints and rates every entry is rational.
 // Both builders take the joint positions from the linkage (exact, converted to T), or from
@@ -68,7 +68,7 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const std::vector<
 
 /// h(q-dot): the acceleration system's right-hand side (everything without omega-dot or
 /// sigma-ddot, moved to the right). `coriolis = false` drops the Coriolis terms: a deliberately
-/// wrong variant, for the claim that they are needed (SPEC C).
+/// wrong variant, for the claim that they are needed (docs/conventions.md §C).
 template <class T>
 std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot, bool coriolis = true,
                                           const std::vector<Vec2<T>>* at = nullptr) {

@@ -1,6 +1,6 @@
 // First-order plane geometry of a linkage at one instant: the velocity and acceleration field of
 // every link, the motion of a point of one link relative to another, and the poles (instant
-// centres) P_ij of every pair of links (SPEC.md D), over any scalar type T.
+// centres) P_ij of every pair of links (docs/conventions.md §D), over any scalar type T.
 //
 // Field of link l (rates omega_l, omega-dot_l relative to the ground): with v0_l, a0_l the
 // velocity and acceleration of the point of l now at the world origin,

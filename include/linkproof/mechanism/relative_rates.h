@@ -1,4 +1,4 @@
-// Relations between the relative angular rates of bodies (SPEC A7), as exact sparse rows.
+// Relations between the relative angular rates of bodies (docs/conventions.md §A7), as exact sparse rows.
 //
 // The unknowns are the relative rates x_{ik} = rate_{i,k} (angular velocity or acceleration of
 // body i relative to body k) for 0 <= i < k < m; rate_{k,i} = -x_{ik} is not a separate
@@ -6,7 +6,7 @@
 // Three kinds of relations are built here:
 //  * the triangle relations rate_{i,j} + rate_{j,k} = rate_{i,k}, one per triple i < j < k;
 //  * the velocity relations (5), (6) of an n-side polygon whose sides are bodies, side n fixed;
-//  * the acceleration relations (22) and its companion (SPEC A4) of such a polygon: affine,
+//  * the acceleration relations (22) and its companion (docs/conventions.md §A4) of such a polygon: affine,
 //    their constant terms depend on the angular velocities (given as exact numbers).
 // The coefficients are the closed forms of geometry/closed_forms.h (i_{n-1,j}, i_{n-2,j},
 // lambda_j, mu_j, cot phi, r_{n-2}/(r_{n-1} sin phi), |r_{n-1}|^2/D), exact.
@@ -72,7 +72,7 @@ std::vector<RateRelation> velocity_relations(const RelativeRates& rates, const B
 /// omega-dot_{n-2,n} - sum_j i_{n-2,j} omega-dot_{j,n} = c_comp, side n of `p` fixed, with
 ///   c_22   = sum_j lambda_j w_j^2 - cot phi S1 - (r_{n-2}/(r_{n-1} sin phi)) S2,
 ///   c_comp = sum_j mu_j w_j^2 + cot phi S2 + (|r_{n-1}|^2 / D) S1,
-/// w_j = omega_{j,n} = omega[bodies_j] - omega[bodies_n], S1, S2 the ordered-pair sums of A3.
+/// w_j = omega_{j,n} = omega[bodies_j] - omega[bodies_n], S1, S2 the ordered-pair sums of docs/conventions.md §A3.
 /// `omega` holds one angular velocity per body, relative to any common reference.
 /// Throws UndefinedQuantity at the dead centre.
 std::vector<RateRelation> acceleration_relations(const RelativeRates& rates, const BodyPolygon& p,

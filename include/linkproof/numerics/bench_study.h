@@ -1,4 +1,4 @@
-// The whole stability study behind `linkproof bench` (SPEC.md A6): error against run time per
+// The whole stability study behind `linkproof bench` (docs/conventions.md §A6): error against run time per
 // route x arithmetic on random polygons (the Pareto front), error against the parameter of every
 // extreme family (numerics/extreme_families.h) with condition estimates, and the cost and escalation
 // rate of the adaptive mode (numerics/adaptive.h). The result is data; report/bench_report.h renders

@@ -1,7 +1,7 @@
-// Extreme and stiff families of configurations (SPEC.md A6), each a continuous one-parameter
+// Extreme and stiff families of configurations (docs/conventions.md §A6), each a continuous one-parameter
 // family of exact polygons, for the stability study (`linkproof bench`).
 //
-// Degeneracy families: a pentagon (the SPEC A8 pentagon, sides r_1..r_4, inputs omega = (2, -1),
+// Degeneracy families: a pentagon (the pentagon of docs/conventions.md §A8, sides r_1..r_4, inputs omega = (2, -1),
 // omega-dot = (1, 3)) in which one side is moved so that at epsilon = 0 the named degeneracy
 // holds exactly and at epsilon != 0 it does not (a = r_{n-2} = r_3, b = r_{n-1} = r_4, J turns
 // by +90 degrees):
@@ -13,7 +13,7 @@
 //   q_at_k        r_1 = -a + b/2 + eps J b     Q_1 = K_{n-1}: the ray Q_1K_{n-1} is null
 //   kprime_at_kn  r_1 = -(a + b) + eps (1, 1)  K'_1 = K_n: the ground line is undefined
 // Everywhere but the dead centre the mechanism is regular: the truth and the closed forms are
-// continuous through epsilon = 0 and only the construction breaks (SPEC A6).
+// continuous through epsilon = 0 and only the construction breaks (docs/conventions.md §A6).
 //
 // Stiff families (scale, not degeneracy):
 //   length_ratio  r_{n-2} scaled by s, s = 1e-8 .. 1e8 (a very short or very long coupler)

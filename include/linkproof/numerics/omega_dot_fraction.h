@@ -5,7 +5,7 @@
 // eight parts in running-error arithmetic (core/tracked.h), where an a priori bound of a product
 // of nearly cancelling factors would be far too wide (it multiplies the factors' shadows).
 //
-// Derivation (SPEC A2, sides r_j, a = r_{n-2}, b = r_{n-1}, J the rotation by +90 degrees,
+// Derivation (docs/conventions.md §A2, sides r_j, a = r_{n-2}, b = r_{n-1}, J the rotation by +90 degrees,
 // J^-1 = -J). Velocities: sum_j omega_j J r_j = 0 gives a w_{n-2} + b w_{n-1} = s with
 //     s = -sum_{j<=n-3} w_j r_j,   so  w_{n-2} = X0 / D, w_{n-1} = X1 / D,  X0 = s x b, X1 = a x s.
 // Accelerations: sum_j (omegadot_j J r_j - omega_j^2 r_j) = 0 gives
@@ -14,7 +14,7 @@
 // and with a x (J v) = a . v, (J v) x b = -(v . b), Cramer's rule, multiplied through by D^3:
 //     P_{n-1} = D^2 (a x h - a . g) - X0^2 |a|^2 - X1^2 (a . b)
 //     P_{n-2} = D^2 (h x b + g . b) + X0^2 (a . b) + X1^2 |b|^2.
-// These are eq. (22) and its companion with the closed-form coefficients of SPEC A3 multiplied by
+// These are eq. (22) and its companion with the closed-form coefficients of docs/conventions.md §A3 multiplied by
 // D^3; tests check them exactly against the direct solve of the loop closure.
 #pragma once
 

@@ -1,18 +1,18 @@
 // The four routes to the angular accelerations of sides n-1 and n-2 of the n-side polygon
-// (Dijksman 1966, SPEC.md A2-A4), each written once, generic over the scalar type T, so that
+// (Dijksman 1966, docs/conventions.md §A2-§A4), each written once, generic over the scalar type T, so that
 // every route runs in every arithmetic of the ladder (numerics/ladder.h) through the same code:
 //
 //   Route::Construction  the paper's way: eq. (22) and the companion formula with i_{n-1,j},
 //                        i_{n-2,j}, lambda_j = i(1-i) cot beta_j and mu_j = i(1-i) cot gamma_j
 //                        read off the graphic construction of four-bar j (Q_j, P'_j, beta_j,
 //                        gamma_j: geometry/construction.h); cot phi and r_{n-2}/(r_{n-1} sin phi)
-//                        from the signed angle phi (SPEC A3). Undefined where the
-//                        construction breaks (Q_j or P'_j at infinity, beta_j = 0, ...: SPEC A6),
+//                        from the signed angle phi (docs/conventions.md §A3). Undefined where the
+//                        construction breaks (Q_j or P'_j at infinity, beta_j = 0, ...: docs/conventions.md §A6),
 //                        and loses digits near those places.
 //   Route::ClosedForms   eq. (22) and the companion with every coefficient by its closed form of
-//                        SPEC A3 (rational functions of the side vectors): defined except at the
+//                        docs/conventions.md §A3 (rational functions of the side vectors): defined except at the
 //                        dead centre D = 0.
-//   Route::DirectSolve   the differentiated loop closure (SPEC A2) as two 2x2 linear systems
+//   Route::DirectSolve   the differentiated loop closure (docs/conventions.md §A2) as two 2x2 linear systems
 //                          omega_{n-2} J r_{n-2} + omega_{n-1} J r_{n-1} = -sum_j omega_j J r_j
 //                          omegadot_{n-2} J r_{n-2} + omegadot_{n-1} J r_{n-1}
 //                              = sum_k omega_k^2 r_k - sum_j omegadot_j J r_j   (k over all sides)
@@ -48,7 +48,7 @@ struct RouteValue {
   T omega_dot_n2;  ///< omega-dot_{n-2,n}
 };
 
-/// S = sum_{j != l} a_j a_l over ordered pairs (SPEC A3), accumulated in O(n).
+/// S = sum_{j != l} a_j a_l over ordered pairs (docs/conventions.md §A3), accumulated in O(n).
 template <class T>
 struct OrderedPairSum {
   T sum = from_int<T>(0), squares = from_int<T>(0);
@@ -111,7 +111,7 @@ RouteValue<T> compute_by_construction(const Polygon<T>& p, const InputRates<T>& 
   return acc.finish(dot(a, b) / D, norm2(a) / D, norm2(b) / D);
 }
 
-/// Route (b): eq. (22) and the companion with the closed forms of SPEC A3.
+/// Route (b): eq. (22) and the companion with the closed forms of docs/conventions.md §A3.
 template <class T>
 RouteValue<T> compute_by_closed_forms(const Polygon<T>& p, const InputRates<T>& in) {
   const ClosedForms<T> cf = compute_closed_forms(p);

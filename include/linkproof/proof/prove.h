@@ -5,7 +5,7 @@
 // lhs - rhs is a rational function of the coordinates, and the claim is proved for that n iff
 // every one is identically zero (GiNaC normal(): numerator and denominator cancelled).
 //
-// Proof for every n (SPEC A4, last item): the lift lemma, checked by the program for the claim
+// Proof for every n (docs/conventions.md §A4, last item): the lift lemma, checked by the program for the claim
 // at hand (lift.h): every coefficient of lhs and of the truth reads only the sides of its
 // monomial and r_{n-2}, r_{n-1}, K_n, at an n where other sides exist; then the per-n proof at
 // the base n = max(min_n, 5), where those sides are independent generic vectors, covers every
@@ -15,7 +15,7 @@
 //
 // Generic vs everywhere: normal() cancels factors that may vanish. Every divisor the compared
 // expressions contain (the construction's, the engine's, and the claim expression's own) is
-// factored and each factor named where it matches a degeneracy of SPEC A6 (dead centre, Q_j or
+// factored and each factor named where it matches a degeneracy of docs/conventions.md §A6 (dead centre, Q_j or
 // P'_j at infinity, beta_j undefined, ...): the verdict is then "holds generically, except
 // where" those factors vanish. A polynomial identity has no exceptions.
 //

@@ -39,7 +39,8 @@ std::string html_escape(const std::string& s);
 ///   < >                        $<$, $>$ (OT1 has no glyph)
 ///   tab, newline, return       a space (a blank line would end a paragraph inside an argument)
 ///   other control characters   '?'
-///   the Unicode characters reports use (omega, beta, <=, ...): their TeX; any other non-ASCII
+///   the Unicode characters reports use (omega, beta, <=, the section sign of the citations
+///   "docs/conventions.md §A3", ...): their TeX; any other non-ASCII
 ///   character (or a byte that is not UTF-8): '?'
 /// The result is ASCII, its braces balance, it starts no command of the input, and it holds no
 /// ^^ (TeX's character-code notation) and no % (a comment would swallow the rest of the line).
@@ -54,8 +55,8 @@ std::string latex_math_escape(const std::string& s, bool superscript_ok = false)
 /// A whole `verbatim` environment (begin, lines, end) showing `code`. The content cannot close
 /// it: a line is broken before the `}` that would complete `\end{verbatim}` (as lines longer
 /// than 90 characters are folded). Control characters other than tab are shown as '?', line
-/// ends (\n, \r\n, \r) end a line, and non-ASCII characters are shown as '?' (pdflatex's
-/// inputenc stops at a character it has no glyph for).
+/// ends (\n, \r\n, \r) end a line, the section sign is written "sec. " and other non-ASCII
+/// characters are shown as '?' (pdflatex's inputenc stops at a character it has no glyph for).
 std::string latex_verbatim(const std::string& code);
 
 /// Markdown inline text (paragraphs, list items, table cells, headings, figure captions):

@@ -1,13 +1,13 @@
 // The derivation report of a mechanism scene (any planar linkage of revolute and prismatic
-// pairs; SPEC A7, B, C, E), in this order:
+// pairs; docs/conventions.md §A7, §B, §C, §E), in this order:
 //   summary     mobility, loops, each claim with its verdict and what it rests on (exact);
 //   mechanism   the linkage drawn to scale (links as bars or plates, joints, sliders with their
 //               guides, tracer points) and the exact omega, omega-dot of every link and the
 //               velocity and acceleration of every joint and point;
 //   plans       (when asked) the velocity and acceleration plans: the image of every joint
 //               drawn from the origin o, each link's image joining its joints' images; for a
-//               four-bar also seed 001's acceleration polygon, head to tail as the textbook
-//               draws it;
+//               four-bar also its acceleration polygon, head to tail as the
+//               acceleration-polygon course notes draw it (docs/conventions.md §B);
 //   tables      the catalogues' tables (acceleration-polygon vectors, curvature centres, ...);
 //   terms, errata, reproduce as in the polygon report.
 #pragma once

@@ -1,4 +1,4 @@
-// The derivation report of one polygon scene (Dijksman 1966, SPEC A): built from the check's
+// The derivation report of one polygon scene (Dijksman 1966, docs/conventions.md part A): built from the check's
 // verdicts, the engine's symbolic derivation and the paper's construction, in this order:
 //   summary       each claim, its verdict and what the verdict rests on (exact residual, or a
 //                 floating-point residual against its derived bound);

@@ -3,7 +3,7 @@
 // any scalar type. Derivations are made once per n and cached.
 //
 // Term by term: the exact omega-dot of sides n-1 and n-2 is linear in the omega-dot_j and
-// quadratic in the omega_j (SPEC A4). Its coefficients are the derivatives of the solution with
+// quadratic in the omega_j (docs/conventions.md §A4). Its coefficients are the derivatives of the solution with
 // respect to the input rates,
 //   [omega-dot_j] = d E / d omega-dot_j,  [omega_j^2] = (1/2) d^2 E / d omega_j^2,
 //   [omega_j omega_l] = d^2 E / d omega_j d omega_l  (j < l),

@@ -1,5 +1,5 @@
 // The loop-closure equations of an n-side polygon, differentiated twice in time and solved
-// exactly for the two dependent sides: the ground truth of linkproof (SPEC.md A2).
+// exactly for the two dependent sides: the ground truth of linkproof (docs/conventions.md §A2).
 //
 //   closure       sum_{j=1..n} L_j (cos theta_j, sin theta_j) = 0                (eq. 1)
 //   velocity      d/dt closure,   side n fixed (omega_n = 0)

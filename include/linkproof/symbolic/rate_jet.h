@@ -1,7 +1,7 @@
 // Forward-mode differentiation of a compiled solution with respect to the input rates.
 //
 // The exact omega and omega-dot of the dependent sides are polynomials of degree <= 2 in the
-// input rates omega_j, omega-dot_j (SPEC A4), with coefficients that are functions of the side
+// input rates omega_j, omega-dot_j (docs/conventions.md §A4), with coefficients that are functions of the side
 // components. A RateJet<T> holds such a polynomial,
 //
 //   c + sum_v L_v r_v + sum_{v <= w} Q_vw r_v r_w      (r_v: the rate variables)

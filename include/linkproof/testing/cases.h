@@ -4,18 +4,18 @@
 // mechanism/linkage.h) and prints as a scene `linkproof check` reads.
 //
 // Families (MechanismCase::family, the label RC_CLASSIFY reports):
-//   polygon/<shape>/n=<n>       Dijksman's n-side polygon (SPEC.md A1) as an n-link closed chain:
+//   polygon/<shape>/n=<n>       Dijksman's n-side polygon (docs/conventions.md §A1) as an n-link closed chain:
 //                               links s1..sn (side j = K_j -> K_{j+1}), ground sn, joints K1..Kn
 //                               (K_j joins sides j-1 and j), inputs s1..s_{n-3}
 //   fourbar/<grashof class>     ground, crank, coupler, rocker; joints O2, A, B, O4; input crank
-//   sixbar/watt-i               PMKS Watt I (SPEC E): AB, BCD, DE, EF, CFG; ground joints A, G
+//   sixbar/watt-i               PMKS Watt I (docs/conventions.md §E): AB, BCD, DE, EF, CFG; ground joints A, G
 //   sixbar/stephenson-iii       PMKS Stephenson III: AB, BCE, CD, EF, FG; ground joints A, D, G
-//   eightbar/fig5               Dijksman Fig. 5 (SPEC A7): links 0..7, joints 12 23 34 40 01 15 57
+//   eightbar/fig5               Dijksman Fig. 5 (docs/conventions.md §A7): links 0..7, joints 12 23 34 40 01 15 57
 //                               74 56 63; link 0 fixed, input link 1
 //   slider/crank                slider-crank: ground, crank, rod, slider; joint P prismatic
 //                               (guide: ground) at B
 //   slider/inverted             inverted slider-crank: ground, crank, block, rocker; the block
-//                               slides in a slot of the rocker along O4 -> A (Coriolis, SPEC C)
+//                               slides in a slot of the rocker along O4 -> A (Coriolis, docs/conventions.md §C)
 // A suffix "/near-toggle...", "/near-dead-centre...", "/q-far...", "/beta-small..." or "/ratio-1e<k>"
 // marks a biased case, "/<bias>-does-not-apply" a case drawn under a bias that the family cannot
 // have (testing/generators.h says which and why).
@@ -45,7 +45,7 @@ struct MechanismCase {
 };
 
 /// The polygon as a closed chain (see the family table above); the truth of this mechanism is
-/// the polygon's ground truth (SPEC A2): link s_j turns with omega_{j,n}.
+/// the polygon's ground truth (docs/conventions.md §A2): link s_j turns with omega_{j,n}.
 MechanismCase polygon_mechanism(const PolygonCase& p);
 
 /// Grashof's classes of a four-bar with lengths s <= p <= q <= l (shortest, two middle, longest):
@@ -79,8 +79,8 @@ bool is_well_posed(const MechanismScene& scene);
 
 /// The determinant of the square velocity system of a scene, exactly: the rigid-body constraint
 /// rows A q-dot = 0 (mechanism/mechanism_solve.h) and one unit row per input. It is 0 exactly
-/// where the inputs cannot drive the mechanism (a toggle, the dead centre D = 0 of a loop, SPEC
-/// A6), and changes sign across such a configuration, so a sign change of it between two nearby
+/// where the inputs cannot drive the mechanism (a toggle, the dead centre D = 0 of a loop,
+/// docs/conventions.md §A6), and changes sign across such a configuration, so a sign change of it between two nearby
 /// configurations proves a singular one between them. Its scale depends on the coordinates and
 /// the sign on the numbering: only its zeros and sign changes mean something.
 /// InputError if the system is not square (rows != unknowns) or the scene has no linkage.

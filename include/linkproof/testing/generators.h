@@ -19,8 +19,8 @@
 //   simpler rates   omega and omega-dot shrink toward 0, then small integers, then halves;
 //   milder bias     the bias exponent k (epsilon = 10^-k, ratio 10^k) shrinks toward 2.
 //
-// Bias toward the hard places (SPEC.md A6; Bias::None draws ordinary cases). A mechanism's
-// loop is read as Dijksman's polygon K_1..K_n (SPEC A1: side n fixed, sides 1..n-3 known, the
+// Bias toward the hard places (docs/conventions.md §A6; Bias::None draws ordinary cases). A mechanism's
+// loop is read as Dijksman's polygon K_1..K_n (docs/conventions.md §A1: side n fixed, sides 1..n-3 known, the
 // unknowns r_{n-2}, r_{n-1}); the bias moves K_{n-1} ~10^-k off a line through K_{n-2}. The loops:
 //   four-bar        O2, A, B, O4        (crank, coupler, rocker, ground; j = 1)
 //   Watt I          C, D, E, F          (BCD, DE, EF, CFG fixed: the dyad DE-EF driven by BCD; j = 1)
@@ -48,7 +48,7 @@
 //   Any             one of the above, or none
 // Biases that cannot apply give an ordinary case labelled "/<bias>-does-not-apply":
 //   QFar, BetaSmall on sliders: a loop with a prismatic pair is not one of Dijksman's polygons
-//   (revolute joints K_j, SPEC A1; mechanism/dijksman_compound.h refuses it), so it has no Q_j,
+//   (revolute joints K_j, docs/conventions.md §A1; mechanism/dijksman_compound.h refuses it), so it has no Q_j,
 //   P'_j or beta_j (the slider-crank's output never turns: i_{n-1,1} = 0);
 //   any bias on gen_fourbar(GrashofClass::ChangePoint): s + l = p + q is an equality that
 //   moving a joint by 10^-k breaks, so the class could not be kept.
