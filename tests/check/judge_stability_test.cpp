@@ -102,16 +102,30 @@ TEST(JudgeStability, Mp30NearSingularitiesIsInconclusiveNeverWrong) {
   }
 }
 
+// Far from every pole (q_infinity at eps = 1): eq22 is present, compared, and holds in double
+// with a tolerance derived from the condition and nothing to trust instead. The claim must be
+// found and must have compared something: a catalogue without eq22 fails here.
 TEST(JudgeStability, WellConditionedDoubleChecksStillHoldWithADerivedTolerance) {
   GroundTruthEngine engine;
   const ExtremeCase c = find_extreme_family("q_infinity")->make(1);
   const PolygonCheck r = check_polygon(engine, dijksman1966::catalogue(), "q1", c.polygon, c.rates, Arithmetic::Double);
+  int found = 0, comparisons = 0;
   for (const ClaimOutcome& claim : r.claims) {
     if (claim.info.id != "dijksman1966.eq22") continue;
+    ++found;
     EXPECT_EQ(claim.verdict, Verdict::Holds);
     EXPECT_FALSE(claim.headline.tolerance_derivation.empty());
     EXPECT_TRUE(claim.headline.trust_route.empty());
+    for (const auto* list : {&claim.instances, &claim.terms}) {
+      for (const ComparisonOutcome& o : *list) {
+        ++comparisons;
+        EXPECT_EQ(o.verdict, Verdict::Holds) << o.label;
+        EXPECT_FALSE(o.tolerance_derivation.empty()) << o.label;
+      }
+    }
   }
+  EXPECT_EQ(found, 1) << "dijksman1966.eq22 is not in the catalogue's check of this polygon";
+  EXPECT_GT(comparisons, 0) << "dijksman1966.eq22 compared nothing";
 }
 
 // trust_route names the side and the quantity that made a comparison inconclusive
