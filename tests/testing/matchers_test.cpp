@@ -1,5 +1,5 @@
 // linkproof::testing matchers and oracle: they accept values found without linkproof (the
-// textbook answer of SPEC.md B, the textbook four-bar closed form), reject a planted error with
+// textbook answer of docs/conventions.md §B, the textbook four-bar closed form), reject a planted error with
 // the exact value and the scene in the message, and the printed scene reads back.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -148,7 +148,7 @@ std::vector<double> closed_form_fourbar_alpha(const Linkage& m, const std::vecto
 }
 
 // The independent formula itself, against the textbook answer (no linkproof truth involved).
-TEST(TestingOracle, ClosedFormFourBarGivesTheTextbookAnswerOfSpecB) {
+TEST(TestingOracle, ClosedFormFourBarGivesTheTextbookAnswerOfConventionsB) {
   const MechanismCase c = seed001_fourbar();
   const std::vector<double> alpha = closed_form_fourbar_alpha(c.scene.linkage, c.scene.inputs);
   ASSERT_EQ(alpha.size(), kSeed001AlphaDoubles.size());
