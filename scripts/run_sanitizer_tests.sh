@@ -2,7 +2,8 @@
 # The second stage of CI (docs/fuzzing.md): one clang tree, build-fuzz/, with every linkproof
 # object instrumented for AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer coverage
 # (-DLINKPROOF_FUZZ=ON, -O1). In it:
-#   1. the unit tests under the sanitizers (`ctest -L unit`): any report aborts its test;
+#   1. the unit tests (target linkproof_unit_tests, every test outside tests/verify/ and
+#      tests/slow/) under the sanitizers (`ctest -L unit`): any report aborts its test;
 #   2. the fuzz targets (tests/fuzz/CMakeLists.txt), LINKPROOF_FUZZ_RUNS executions each from the seed corpus
 #      (`ctest -L fuzz`): a crash, a sanitizer report, a hang (> 10 s) or > 2 GB fails.
 # Extra arguments go to the cmake configure step (e.g. -DLINKPROOF_FUZZ_RUNS=100000).
@@ -21,7 +22,7 @@ configure=(cmake -S . -B build-fuzz "${generator[@]}" -DCMAKE_CXX_COMPILER=clang
            "${launcher[@]}" "$@")
 echo "==> sanitizer: ${configure[*]}"
 "${configure[@]}"
-targets=(linkproof_tests fuzz_polygon_scene fuzz_mechanism_scene fuzz_claim_file fuzz_cli_args fuzz_report
+targets=(linkproof_unit_tests fuzz_polygon_scene fuzz_mechanism_scene fuzz_claim_file fuzz_cli_args fuzz_report
          fuzz_check_data)
 echo "==> sanitizer: cmake --build build-fuzz --target ${targets[*]} -j${jobs}"
 build_start=$SECONDS

@@ -1,7 +1,8 @@
 // Reports as a reader sees them: the HTML rendered by headless Chromium (the DOM after KaTeX
 // ran, and a screenshot that is not blank), the LaTeX compiled by pdflatex. Each test skips only
 // when its tool is not installed (scripts/install_deps.sh installs both, so CI runs them).
-// Named ...Slow (label slow): a headless browser start costs seconds of wall time.
+// In tests/slow/ (label slow, tests/CMakeLists.txt): a headless browser start costs seconds of
+// wall time.
 #include <gtest/gtest.h>
 
 #include <cstdio>
