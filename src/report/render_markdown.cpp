@@ -35,9 +35,11 @@ void block_md(const Block& b, std::string& out, std::map<std::string, std::strin
       out += "\n|";
       for (size_t k = 0; k < b.table.header.size(); ++k) out += "---|";
       out += "\n";
+      // Every row has the header's cells, as in LaTeX: a shorter row is padded, so no row of
+      // the table reads as another table's (found by fuzz_report).
       for (const auto& row : b.table.rows) {
         out += "|";
-        for (const auto& c : row) out += " " + rich_md(c) + " |";
+        for (size_t k = 0; k < b.table.header.size(); ++k) out += " " + (k < row.size() ? rich_md(row[k]) : "") + " |";
         out += "\n";
       }
       out += "\n";

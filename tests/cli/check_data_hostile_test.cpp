@@ -85,7 +85,8 @@ TEST(CheckDataSliders, AWrongSlidingRateOfANonInputSliderDiffersAndAJointBeyondT
   const std::string vd = checks[1]["exact_rational"], ah = checks[2]["exact_rational"];
   const auto ok = run_cli({"check-data", kClass3, write_temp("class3_exact.csv", class3_csv(alpha2, vd, ah)), "--json"});
   EXPECT_EQ(ok.code, 0) << ok.out.substr(0, 3000);
-  for (const auto& c : json_of(ok)["samples"][0]["checks"]) EXPECT_EQ(c["outcome"], "agrees") << c.dump();
+  const auto ok_json = json_of(ok);  // a range-for over a temporary's member reads freed memory (ASan)
+  for (const auto& c : ok_json["samples"][0]["checks"]) EXPECT_EQ(c["outcome"], "agrees") << c.dump();
 }
 
 // ---- item 2: infinities and overflow never agree
