@@ -51,12 +51,14 @@ struct Strings {
   }
 };
 
-// A harmless string of the same shape: empty stays empty; a label with a subscript (an '_'
-// followed by something) keeps one, so that figures draw the same elements.
+// A harmless string of the same shape: empty stays empty; a label with an '_' keeps it, and
+// something after it when it had something, so that figures draw the same elements (names get
+// an index appended, which turns a trailing '_' into a subscript).
 std::string twin(const std::string& s) {
   if (s.empty()) return "";
   const auto u = s.find('_');
-  return u != std::string::npos && u + 1 < s.size() ? "x_x" : "x";
+  if (u == std::string::npos) return "x";
+  return u + 1 < s.size() ? "x_x" : "x_";
 }
 
 Strings twin_of(const Strings& in) {
@@ -174,19 +176,25 @@ void check_markdown(const std::string& md, const std::string& twin_md, const std
   }
 }
 
-// The element names of an HTML text in order ("<section", "</section", ...).
-std::vector<std::string> elements(const std::string& html) {
-  std::vector<std::string> out;
-  for (std::size_t at = html.find('<'); at != std::string::npos; at = html.find('<', at + 1)) {
-    std::size_t end = at + 1;
-    while (end < html.size() && html[end] != ' ' && html[end] != '>' && html[end] != '\n') ++end;
-    out.push_back(html.substr(at, end - at));
-  }
-  return out;
+// The text around the k-th '<' of an HTML text, for a finding's message.
+std::string around_element(const std::string& html, std::size_t k) {
+  std::size_t at = html.find('<');
+  for (std::size_t i = 0; i < k && at != std::string::npos; ++i) at = html.find('<', at + 1);
+  if (at == std::string::npos) return "(end)";
+  const std::size_t from = at > 300 ? at - 300 : 0;
+  return html.substr(from, 600);
 }
 
 void check_html(const std::string& html, const std::string& twin_html) {
-  require(elements(html) == elements(twin_html), "HTML: an element of the input", html);
+  const auto e = linkproof::test::html_elements(html), t = linkproof::test::html_elements(twin_html);
+  if (e != t) {
+    std::size_t k = 0;
+    while (k < e.size() && k < t.size() && e[k] == t[k]) ++k;
+    const std::string got = k < e.size() ? e[k] : "(end)", want = k < t.size() ? t[k] : "(end)";
+    violated("HTML: an element of the input", "element " + std::to_string(k) + ": " + got + " where the twin has " +
+                                                   want + "\n" + around_element(html, k) + "\ntwin:\n" +
+                                                   around_element(twin_html, k));
+  }
   require(linkproof::test::count(html, "\"") == linkproof::test::count(twin_html, "\""),
           "HTML: a quote of the input closed an attribute", html);
 }

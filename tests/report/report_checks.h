@@ -103,6 +103,18 @@ inline std::vector<std::string> latex_structure(const std::string& tex) {
 // ------------------------------------------------------------------ Markdown
 
 /// How a CommonMark reader cuts a Markdown text (enough of it for reports).
+/// The element names of an HTML text in order ("<section", "</section", ...): two texts with
+/// the same sequence have the same structure whatever their strings hold.
+inline std::vector<std::string> html_elements(const std::string& html) {
+  std::vector<std::string> out;
+  for (std::size_t at = html.find('<'); at != std::string::npos; at = html.find('<', at + 1)) {
+    std::size_t end = at + 1;
+    while (end < html.size() && html[end] != ' ' && html[end] != '>' && html[end] != '\n') ++end;
+    out.push_back(html.substr(at, end - at));
+  }
+  return out;
+}
+
 struct MarkdownOutline {
   std::size_t fences = 0;               ///< fenced code blocks
   bool unclosed_fence = false;          ///< a fence still open at the end

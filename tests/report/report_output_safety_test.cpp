@@ -105,6 +105,31 @@ TEST(ReportOutputSafety, HtmlOfAHostileMechanismHasNoInjectedElement) {
   EXPECT_NE(html.find("&lt;script&gt;alert(1)"), std::string::npos);
 }
 
+// The velocity and acceleration plans draw the joints in the scene's order: renaming a joint so
+// that it sorts elsewhere changes no element of the page (the plans once followed name order, so
+// a subscripted name moved its <tspan>; found by fuzz_report).
+TEST(ReportOutputSafety, PlansDrawJointsInSceneOrderWhateverTheirNames) {
+  std::string renamed = test::benign_fourbar_scene();
+  for (const std::string from : {"\"A_x\"", "\"O\""}) {
+    const std::string to = from == "\"O\"" ? "\"Z\"" : "\"Y_x\"";
+    for (auto at = renamed.find(from); at != std::string::npos; at = renamed.find(from, at + 1)) renamed.replace(at, from.size(), to);
+  }
+  std::vector<std::string> elements[2];
+  int k = 0;
+  for (const std::string& text : {test::benign_fourbar_scene(), renamed}) {
+    TempDir dir("plans_order" + std::to_string(k));
+    const std::string scene = write_file(dir.path, "scene.yaml", text);
+    const CliRun r = run_cli({"report", scene, "--plans", "--format", "html", "--katex",
+                              (dir.path / "no_katex").string(), "--out", dir.path.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string html = slurp(dir.path / "scene.html");
+    ASSERT_NE(html.find("velocity-plan"), std::string::npos) << "no plan drawn";
+    elements[k++] = test::html_elements(html);
+  }
+  ASSERT_NE(renamed, test::benign_fourbar_scene());
+  EXPECT_EQ(elements[0], elements[1]);
+}
+
 TEST(ReportOutputSafety, ClaimFileTextsAreEscapedInEveryFormat) {
   TempDir dir("safety_claims");
   const std::string claims = write_file(
