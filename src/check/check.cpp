@@ -17,19 +17,16 @@ bool ClaimOutcome::is_as_expected(bool strict) const {
 }
 
 namespace {
-/// Adds the quantity that made each inconclusive comparison inconclusive to its trust_route
-/// (one re-evaluation of the claim, only when something is inconclusive).
+/// Adds the quantity that made each undecided floating-point comparison inconclusive (one
+/// re-evaluation of the claim, only when something is undecided).
 template <class T>
 void name_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context, ClaimOutcome& out) {
   std::optional<InconclusiveCause> cause;
   for (auto* group : {&out.instances, &out.terms})
     for (ComparisonOutcome& c : *group) {
-      if (c.verdict != Verdict::Inconclusive || c.inconclusive_side.empty()) continue;
+      if (c.verdict != Verdict::Inconclusive || !c.floating || c.floating->undecided == Undecided::None) continue;
       if (!cause) cause = find_inconclusive_cause(claim, context);
-      if (cause->kind != InconclusiveCause::Kind::OwnArithmetic) c.inconclusive_quantity = cause->quantity;
-      c.trust_route = c.inconclusive_side + ": " +
-                      (c.inconclusive_side == "both" ? "both sides' error bounds are as wide" : "its error bound is the wider one") +
-                      "; " + cause->describe();
+      c.cause = cause;
     }
 }
 }  // namespace
@@ -147,11 +144,11 @@ void fill_asked_rates(PolygonCheck& r, const PolygonContext<T>& ctx) {
     const int j = std::stoi(asked.subject.name);  // validated 1..n by the scene reader
     auto& slot = (asked.dot ? r.omega_dot : r.omega)[static_cast<std::size_t>(j - 1)];
     if (j <= ctx.inputs())
-      slot = to_text(asked.dot ? ctx.omega_dot_in(j) : ctx.omega_in(j));
+      slot = result_number(asked.dot ? ctx.omega_dot_in(j) : ctx.omega_in(j));
     else if (j == r.n)
-      slot = "0";
+      slot = ResultNumber(Rational(0));
     else if (ctx.truth().has_value())
-      slot = to_text((asked.dot ? ctx.truth().get().omega_dot : ctx.truth().get().omega)[static_cast<std::size_t>(j - 1)]);
+      slot = result_number((asked.dot ? ctx.truth().get().omega_dot : ctx.truth().get().omega)[static_cast<std::size_t>(j - 1)]);
   }
 }
 
@@ -165,12 +162,11 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
   r.scene = scene;
   r.arithmetic = a;
   r.n = polygon.n();
-  r.determinant = format_rational(polygon.dead_centre_determinant());
+  r.determinant = polygon.dead_centre_determinant();
   r.dead_centre = cln::zerop(polygon.dead_centre_determinant());
   if (r.dead_centre) r.dead_centre_reason = dead_centre_error().reason();
 
   with_scalar_type(a, [&]<class T>() {
-    r.tolerance_rule = tolerance_rule<T>();
     std::optional<PolygonContext<T>> built;
     try {
       built.emplace(build_polygon_context<T>(engine, polygon, rates));
@@ -183,13 +179,13 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
     }
     const PolygonContext<T>& ctx = *built;
     if (a != Arithmetic::Exact)
-      r.determinant = to_text(r.dead_centre ? from_int<T>(0) : cross(ctx.r(r.n - 2), ctx.r(r.n - 1)));
+      r.determinant = result_number(r.dead_centre ? from_int<T>(0) : cross(ctx.r(r.n - 2), ctx.r(r.n - 1)));
     if (r.ask) {
       fill_asked_rates(r, ctx);
     } else {
       for (int j = 0; j < r.n; ++j) {
-        r.omega.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega[j])) : std::nullopt);
-        r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(to_text(ctx.truth().get().omega_dot[j])) : std::nullopt);
+        r.omega.push_back(ctx.truth().has_value() ? std::optional(result_number(ctx.truth().get().omega[j])) : std::nullopt);
+        r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(result_number(ctx.truth().get().omega_dot[j])) : std::nullopt);
       }
     }
     for (const Claim& claim : catalogue) {
@@ -206,10 +202,10 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
   // At the dead centre the inputs are still known; only sides n-2 and n-1 are undefined.
   if (r.dead_centre && !r.ask) {
     for (int j = 0; j < r.n - 3; ++j) {
-      r.omega[j] = format_rational(rates.omega[j]);
-      r.omega_dot[j] = format_rational(rates.omega_dot[j]);
+      r.omega[j] = rates.omega[j];
+      r.omega_dot[j] = rates.omega_dot[j];
     }
-    r.omega[r.n - 1] = r.omega_dot[r.n - 1] = "0";
+    r.omega[r.n - 1] = r.omega_dot[r.n - 1] = Rational(0);
   }
   return r;
 }

@@ -77,29 +77,6 @@ struct Search {
 
 }  // namespace
 
-std::string InconclusiveCause::describe() const {
-  switch (kind) {
-    case Kind::DeadCentre:
-      return fmt::format(
-          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): near the dead centre every route "
-          "divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, docs/conventions.md §A6), so no floating-point route is better; exact "
-          "arithmetic (--arith exact) or a longer precision (--arith mp1000) decides",
-          quantity, relative_bound);
-    case Kind::Construction:
-      return fmt::format(
-          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): the construction loses digits near "
-          "its pole (docs/conventions.md §A6) while the closed forms and the engine keep full accuracy; exact arithmetic "
-          "(--arith exact) decides",
-          quantity, relative_bound);
-    case Kind::OwnArithmetic:
-      break;
-  }
-  return fmt::format(
-      "no quantity the claim reads has an error bound beyond sqrt(u) of its magnitude{}: the digits were lost in the claim's "
-      "own arithmetic (cancellation between its terms); exact arithmetic (--arith exact) or a longer precision decides",
-      quantity.empty() ? std::string() : fmt::format(" (the widest is {}, {:.3g} of it)", quantity, relative_bound));
-}
-
 template <class T>
 InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context) {
   using F = decltype(T::v);

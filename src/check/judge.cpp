@@ -1,7 +1,5 @@
 #include "linkproof/check/judge.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,15 +29,15 @@ ComparisonOutcome judge_exact(const Comparison<Rational>& c) {
   const Rational& l = c.lhs.get();
   const Rational& r = c.rhs.get();
   const Rational res = l - r;
-  out.lhs = format_rational(l);
-  out.rhs = format_rational(r);
-  out.residual = format_rational(res);
+  out.lhs = l;
+  out.rhs = r;
+  out.residual = res;
   out.verdict = cln::zerop(res) ? Verdict::Holds : Verdict::Fails;
   return out;
 }
 
 // What the judge needs beyond TrackedTraits: exact comparisons of a radius with a midpoint,
-// the threshold sqrt(u) scale, radii as text, relative bounds and conditions as doubles. IEEE types keep
+// the threshold sqrt(u) scale, radii as result values, relative bounds and conditions as doubles. IEEE types keep
 // their former plain-double formulas (the radius is an F); MpFloat compares exactly in F (a
 // WideBound is exact in any CLN format of >= 53 bits).
 template <class F>
@@ -53,7 +51,8 @@ struct JudgeOps {
   static bool magnitude_exceeds(const F& x, const F& e) { return std::abs(x) > e; }
   static bool radius_exceeds(const F& e, const F& t) { return e > t; }
   static F sqrt_u_times(const F& scale) { return std::sqrt(TrackedTraits<F>::unit_roundoff()) * scale; }
-  static std::string radius_text(const F& e) { return format_float(e); }
+  static ResultRadius radius(const F& e) { return e; }
+  static ResultNumber number(const F& x) { return x; }
   /// e / scale rounded upward, then to a double rounded upward (docs/check.md promises a bound).
   static double relative(const F& e, const F& scale) {
     if (!(scale > 0)) return e == 0 ? 0.0 : HUGE_VAL;
@@ -84,7 +83,8 @@ struct JudgeOps<MpFloat<D>> {
   static F sqrt_u_times(const F& scale) {
     return F(cln::scale_float(scale.value(), -static_cast<long>(F::precision_bits() / 2)));
   }
-  static std::string radius_text(const WideBound& e) { return e.to_string(); }
+  static ResultRadius radius(const WideBound& e) { return e; }
+  static ResultNumber number(const F& x) { return x.value(); }
   static double relative(const WideBound& e, const F& scale) {
     if (cln::zerop(scale.value())) return e.is_zero() ? 0.0 : HUGE_VAL;
     return (e / WideBound::from_float_down(scale.value())).to_double_up();
@@ -101,15 +101,6 @@ struct JudgeOps<MpFloat<D>> {
     return (x.e / (TT::unit_roundoff() * WideBound::from_float_down(x.v.value()))).to_double_up();
   }
 };
-
-template <class Radius>
-std::string short_text(const Radius& e) {
-  if constexpr (std::is_floating_point_v<Radius>) {
-    return fmt::format("{:.3g}", static_cast<double>(e));
-  } else {
-    return e.to_short_string();
-  }
-}
 
 /// How a floating-point comparison ends (the rule of judge.h), without any text.
 enum class TrackedCase { NonFinite, Unbounded, Fails, TooWide, Holds };
@@ -152,48 +143,30 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
   const Tracked<F>& l = c.lhs.get();
   const Tracked<F>& r = c.rhs.get();
   const Tracked<F> res = l - r;  // its radius is e_l + e_r plus the subtraction's rounding
-  out.lhs = ScalarTraits<F>::to_string(l.v);
-  out.rhs = ScalarTraits<F>::to_string(r.v);
-  out.residual = ScalarTraits<F>::to_string(res.v);
-  out.tolerance = Ops::radius_text(res.e);
+  out.lhs = Ops::number(l.v);
+  out.rhs = Ops::number(r.v);
+  out.residual = Ops::number(res.v);
+  FloatEvidence f{Ops::radius(res.e), Ops::radius(l.e), Ops::radius(r.e)};
   const F scale = judge_scale(l, r, c.scale);
-  out.relative_error_bound = Ops::relative(res.e, scale);
-  const double cond_l = Ops::condition(l), cond_r = Ops::condition(r);
-  out.tolerance_derivation = fmt::format(
-      "tolerance {} = bound(lhs) {} + bound(rhs) {} + rounding of lhs - rhs; each bound is a running "
-      "error bound (inputs rounded from the exact scene, every operation's rounding), i.e. u times the "
-      "evaluation's condition: condition(lhs) = {:.3g}, condition(rhs) = {:.3g}, u = 2^-{}",
-      out.tolerance, short_text(l.e), short_text(r.e), cond_l, cond_r, TT::precision_bits());
-  // The side whose bound is the wider relative to its own magnitude (an unbounded or
-  // non-finite side is the widest); the claim runner adds the quantity (check/inconclusive_cause.h).
-  const auto set_trust = [&] {
-    const double rel_l = Ops::relative_to_own(l), rel_r = Ops::relative_to_own(r);
-    out.inconclusive_side = rel_l == rel_r ? "both" : rel_l > rel_r ? "lhs" : "rhs";
-    out.trust_route = fmt::format(
-        "{}: {} (bound {:.3g} of its magnitude against {:.3g}); exact arithmetic (--arith exact) decides this "
-        "comparison",
-        out.inconclusive_side,
-        out.inconclusive_side == "both" ? "both sides' bounds are as wide" : "its error bound is the wider one",
-        std::max(rel_l, rel_r), std::min(rel_l, rel_r));
-  };
+  f.relative_error_bound = Ops::relative(res.e, scale);
+  f.condition_lhs = Ops::condition(l);
+  f.condition_rhs = Ops::condition(r);
+  f.precision_bits = TT::precision_bits();
   const TrackedCase k = decide_tracked(l, r, res, scale);
   out.verdict = verdict_of(k);
-  switch (k) {
-    case TrackedCase::NonFinite:
-      out.reason = "a side overflowed or is not a number in this precision";
-      set_trust();
-      break;
-    case TrackedCase::Unbounded:
-      out.reason = "the error bound is unbounded: a divisor is not distinguishable from zero in this precision";
-      set_trust();
-      break;
-    case TrackedCase::TooWide:
-      out.reason = fmt::format("agreement within the error bound, but the bound is {:.3g} relative: too wide to confirm",
-                               out.relative_error_bound);
-      set_trust();
-      break;
-    default: break;
+  f.undecided = k == TrackedCase::NonFinite   ? Undecided::NonFinite
+                : k == TrackedCase::Unbounded ? Undecided::Unbounded
+                : k == TrackedCase::TooWide   ? Undecided::TooWide
+                                              : Undecided::None;
+  if (f.undecided != Undecided::None) {
+    // The side whose bound is the wider relative to its own magnitude (an unbounded or
+    // non-finite side is the widest); the claim runner adds the quantity (check/inconclusive_cause.h).
+    const double rel_l = Ops::relative_to_own(l), rel_r = Ops::relative_to_own(r);
+    f.wider_side = rel_l == rel_r ? Side::Both : rel_l > rel_r ? Side::Lhs : Side::Rhs;
+    f.relative_wide = std::max(rel_l, rel_r);
+    f.relative_narrow = std::min(rel_l, rel_r);
   }
+  out.floating = std::move(f);
   return out;
 }
 
@@ -220,37 +193,14 @@ Verdict judge_verdict(const Comparison<T>& c) {
   }
 }
 
-namespace {
-std::string tracked_rule(const std::string& name, int bits) {
-  return fmt::format(
-      "{} (unit roundoff u = 2^-{}) with running error bounds: every value carries a bound on its "
-      "distance to the exact result (midpoint-radius arithmetic; inputs rounded from the exact scene). "
-      "tolerance = bound(lhs) + bound(rhs), i.e. u times the condition of both evaluations. "
-      "fails iff |lhs - rhs| > tolerance; inconclusive if tolerance > sqrt(u) max(|lhs|, |rhs|) (for one coefficient of a polynomial in "
-      "the rates: its largest coefficient) or a "
-      "bound is unbounded; holds otherwise",
-      name, bits);
-}
-}  // namespace
-
-template <class T>
-std::string tolerance_rule() {
-  if constexpr (ScalarTraits<T>::is_exact) {
-    return "exact rational arithmetic: a claim holds iff lhs - rhs is exactly 0";
-  } else {
-    using F = decltype(T::v);
-    const int p = TrackedTraits<F>::precision_bits();
-    if constexpr (std::is_same_v<F, double>) {
-      return tracked_rule("IEEE double", p);
-    } else if constexpr (std::is_same_v<F, long double>) {
-      return tracked_rule("x87 long double", p);
-    } else {
-      return tracked_rule(fmt::format("{} (CLN long float, {} bits, correctly rounded; error bounds kept with a "
-                                      "wide exponent and rounded upward)",
-                                      ScalarTraits<F>::name, p),
-                          p);
-    }
+std::string_view to_string(Side s) {
+  switch (s) {
+    case Side::Lhs: return "lhs";
+    case Side::Rhs: return "rhs";
+    case Side::Both: return "both";
+    case Side::None: break;
   }
+  return "";
 }
 
 // One instantiation per arithmetic of the claim tuple (claims/claim.h).
@@ -268,12 +218,5 @@ template Verdict judge_verdict<Tracked<MpFloat<30>>>(const Comparison<Tracked<Mp
 template Verdict judge_verdict<Tracked<MpFloat<50>>>(const Comparison<Tracked<MpFloat<50>>>&);
 template Verdict judge_verdict<Tracked<MpFloat<100>>>(const Comparison<Tracked<MpFloat<100>>>&);
 template Verdict judge_verdict<Tracked<MpFloat<1000>>>(const Comparison<Tracked<MpFloat<1000>>>&);
-template std::string tolerance_rule<Rational>();
-template std::string tolerance_rule<Tracked<double>>();
-template std::string tolerance_rule<Tracked<long double>>();
-template std::string tolerance_rule<Tracked<MpFloat<30>>>();
-template std::string tolerance_rule<Tracked<MpFloat<50>>>();
-template std::string tolerance_rule<Tracked<MpFloat<100>>>();
-template std::string tolerance_rule<Tracked<MpFloat<1000>>>();
 
 }  // namespace linkproof

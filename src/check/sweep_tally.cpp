@@ -4,7 +4,6 @@ namespace linkproof {
 
 SweepTally::SweepTally(const std::vector<Claim>& catalogue, const SweepOptions& options) {
   report_.options = options;
-  report_.tolerance_rule = with_scalar_type(options.arithmetic, []<class T>() { return tolerance_rule<T>(); });
   for (const Claim& c : catalogue) {
     slot_[c.info.id] = claims_.size();
     claims_.push_back(c.info);

@@ -75,22 +75,22 @@ template <class T>
 void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMotion<T>& m) {
   const Linkage& g = s.linkage;
   for (int l = 0; l < g.link_count(); ++l) {
-    r.omega.push_back(to_text(m.omega[static_cast<size_t>(l)]));
-    r.omega_dot.push_back(to_text(m.omega_dot[static_cast<size_t>(l)]));
+    r.omega.push_back(result_number(m.omega[static_cast<size_t>(l)]));
+    r.omega_dot.push_back(result_number(m.omega_dot[static_cast<size_t>(l)]));
   }
   for (int i = 0; i < g.link_count(); ++i)
     for (int k = i + 1; k < g.link_count(); ++k)
       r.relative.push_back({g.link_name(i), g.link_name(k),
-                            to_text(m.omega[static_cast<size_t>(i)] - m.omega[static_cast<size_t>(k)]),
-                            to_text(m.omega_dot[static_cast<size_t>(i)] - m.omega_dot[static_cast<size_t>(k)])});
+                            result_number(m.omega[static_cast<size_t>(i)] - m.omega[static_cast<size_t>(k)]),
+                            result_number(m.omega_dot[static_cast<size_t>(i)] - m.omega_dot[static_cast<size_t>(k)])});
   for (int j = 0; j < g.joint_count(); ++j) {
     MechanismCheck::PointMotion p;
     p.name = g.joint(j).name;
     const auto& v = m.joint_v[static_cast<size_t>(j)];
     const auto& a = m.joint_a[static_cast<size_t>(j)];
-    p.v[0] = to_text(v.x), p.v[1] = to_text(v.y), p.a[0] = to_text(a.x), p.a[1] = to_text(a.y);
+    p.v[0] = result_number(v.x), p.v[1] = result_number(v.y), p.a[0] = result_number(a.x), p.a[1] = result_number(a.y);
     if (g.joint(j).type == JointType::Prismatic)
-      p.slide = to_text(m.slide[static_cast<size_t>(j)]), p.slide_dot = to_text(m.slide_dot[static_cast<size_t>(j)]);
+      p.slide = result_number(m.slide[static_cast<size_t>(j)]), p.slide_dot = result_number(m.slide_dot[static_cast<size_t>(j)]);
     r.joints.push_back(std::move(p));
   }
   for (const MechanismPoint& pt : s.points) {
@@ -112,7 +112,7 @@ void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMoti
     const Vec2<T> a = a0 + m.omega_dot[l] * perp(d) - (m.omega[l] * m.omega[l]) * d;
     MechanismCheck::PointMotion p;
     p.name = pt.name;
-    p.v[0] = to_text(v.x), p.v[1] = to_text(v.y), p.a[0] = to_text(a.x), p.a[1] = to_text(a.y);
+    p.v[0] = result_number(v.x), p.v[1] = result_number(v.y), p.a[0] = result_number(a.x), p.a[1] = result_number(a.y);
     r.points.push_back(std::move(p));
   }
 }
@@ -230,7 +230,7 @@ MechanismCheck check_solved(const MechanismScene& s, const std::vector<Mechanism
   r.condition = velocity_condition(s);
   Rational residual = 0;
   for (const Rational& x : closure.position_residual()) residual = cln::max(residual, cln::abs(x));
-  r.closure_residual = format_rational(residual);
+  r.closure_residual = residual;
   r.dimension_residual = s.dimension_residual;
   if (a == Arithmetic::Exact) {
     fill_motion(r, s, truth.motion);
@@ -310,7 +310,8 @@ std::vector<int> asked_links(const MechanismScene& s) {
 
 // Only the asked rows of a check made on the sub-mechanism.
 void keep_asked_rows(MechanismCheck& r, const SceneAsk& ask) {
-  std::vector<std::string> names, omega, omega_dot;
+  std::vector<std::string> names;
+  std::vector<ResultNumber> omega, omega_dot;
   const auto add_link = [&](const std::string& name) {
     if (std::find(names.begin(), names.end(), name) != names.end()) return;
     const auto k = static_cast<size_t>(std::find(r.link_names.begin(), r.link_names.end(), name) - r.link_names.begin());

@@ -3,6 +3,7 @@
 
 #include <map>
 
+#include "linkproof/report/comparison_text.h"
 #include "linkproof/report/polygon_document.h"
 
 namespace linkproof::report {
@@ -22,11 +23,11 @@ std::string verdict_basis(const ClaimOutcome& c, Arithmetic a) {
   const std::string where = h.label.empty() ? "" : " at " + h.label;
   const size_t compared = c.instances.size() + c.terms.size();
   if (a == Arithmetic::Exact)
-    return fmt::format("exact instance (rational arithmetic): residual {}{} ({} comparison{})", h.residual, where,
+    return fmt::format("exact instance (rational arithmetic): residual {}{} ({} comparison{})", residual_text(h), where,
                        compared, compared == 1 ? "" : "s");
   std::string basis = fmt::format("floating point ({}): |residual| {} against the derived bound {}{}", s(to_string(a)),
-                                  h.residual, h.tolerance, where);
-  if (!h.reason.empty()) basis += "; " + h.reason;
+                                  residual_text(h), tolerance_text(h), where);
+  if (const std::string r = reason_text(h); !r.empty()) basis += "; " + r;
   return basis;
 }
 
@@ -49,7 +50,7 @@ Section terms_section(const std::vector<ClaimOutcome>& claims) {
     if (c.terms.empty()) continue;
     Table t{{plain("monomial"), plain("engine (exact)"), plain("formula"), plain("residual"), plain("verdict")}, {}};
     for (const auto& term : c.terms)
-      t.rows.push_back({plain(term.label), plain(term.lhs), plain(term.rhs), plain(term.residual),
+      t.rows.push_back({plain(term.label), plain(lhs_text(term)), plain(rhs_text(term)), plain(residual_text(term)),
                         plain(s(to_string(term.verdict)))});
     Section sub{"terms-" + c.info.id, c.info.id + ": " + c.info.source, {}, {}};
     sub.blocks.push_back(paragraph(plain(c.info.statement)));
@@ -81,15 +82,15 @@ Section errata_section(const std::vector<ClaimOutcome>& claims, const std::strin
     t.rows.push_back({plain("claim"), plain(c.info.id), plain(ok ? ok->info.id : "(no corrected claim)")});
     t.rows.push_back({plain("statement"), plain(c.info.statement), plain(ok ? ok->info.statement : "")});
     t.rows.push_back({plain("verdict here"), plain(s(to_string(c.verdict))), plain(ok ? s(to_string(ok->verdict)) : "")});
-    t.rows.push_back({plain("lhs vs rhs"), plain(c.headline.lhs + "  vs  " + c.headline.rhs),
-                      plain(ok ? ok->headline.lhs + "  vs  " + ok->headline.rhs : "")});
+    t.rows.push_back({plain("lhs vs rhs"), plain(lhs_text(c.headline) + "  vs  " + rhs_text(c.headline)),
+                      plain(ok ? lhs_text(ok->headline) + "  vs  " + rhs_text(ok->headline) : "")});
     Section sub{"erratum-" + c.info.id, c.info.id, {}, {}};
     if (!c.info.note.empty()) sub.blocks.push_back(paragraph(plain(c.info.note)));
     sub.blocks.push_back(table_block(std::move(t)));
     if (c.verdict == Verdict::Fails) {
       any_fails_here = true;
       sub.blocks.push_back(paragraph(plain("This scene is a counterexample: the reading fails here (residual " +
-                                           c.headline.residual + " at " + c.headline.label + ").")));
+                                           residual_text(c.headline) + " at " + c.headline.label + ").")));
     } else {
       sub.blocks.push_back(paragraph(plain("On this scene the reading does not fail (" + s(to_string(c.verdict)) +
                                            "): it coincides with the truth here, which says nothing for it in general.")));

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "linkproof/report/comparison_text.h"
+#include "linkproof/report/number_text.h"
+
 namespace linkproof {
 
 using nlohmann::json;
@@ -17,36 +20,42 @@ json to_json(const ComparisonOutcome& c) {
     j["reason"] = c.reason;
     return j;
   }
-  j["lhs"] = c.lhs;
-  j["rhs"] = c.rhs;
-  j["residual"] = c.residual;
-  if (!c.tolerance.empty()) {
-    j["tolerance"] = c.tolerance;
-    j["relative_error_bound"] = c.relative_error_bound;
-    if (!c.tolerance_derivation.empty()) j["tolerance_derivation"] = c.tolerance_derivation;
+  // A comparison that could not be evaluated (an arithmetic's exponent range exceeded) keeps
+  // the keys, empty, as the contract has always had them.
+  for (const auto& [key, x] : {std::pair{"lhs", &c.lhs}, {"rhs", &c.rhs}, {"residual", &c.residual}})
+    j[key] = *x ? number_text(**x) : std::string();
+  if (c.floating) {
+    j["tolerance"] = radius_text(c.floating->tolerance);
+    j["relative_error_bound"] = c.floating->relative_error_bound;
+    j["tolerance_derivation"] = tolerance_derivation_text(c);
   }
-  if (!c.trust_route.empty()) j["trust_route"] = c.trust_route;
-  if (!c.inconclusive_side.empty()) j["inconclusive_side"] = c.inconclusive_side;
-  if (!c.inconclusive_quantity.empty()) j["inconclusive_quantity"] = c.inconclusive_quantity;
-  if (!c.reason.empty()) j["reason"] = c.reason;
+  if (const std::string t = trust_route_text(c); !t.empty()) j["trust_route"] = t;
+  if (c.floating && c.floating->wider_side != Side::None)
+    j["inconclusive_side"] = std::string(to_string(c.floating->wider_side));
+  if (const std::string q = inconclusive_quantity(c); !q.empty()) j["inconclusive_quantity"] = q;
+  if (const std::string r = reason_text(c); !r.empty()) j["reason"] = r;
   return j;
+}
+
+json evidence_json(const SweepExample& e) {
+  return e.recorded_evidence.empty() ? to_json(e.headline) : json::parse(e.recorded_evidence);
 }
 
 namespace {
 
-json rates_object(const std::vector<std::optional<std::string>>& v) {
+json rates_object(const std::vector<std::optional<ResultNumber>>& v) {
   json o = json::object();
-  for (size_t j = 0; j < v.size(); ++j) o[std::to_string(j + 1)] = v[j] ? json(*v[j]) : json(nullptr);
+  for (size_t j = 0; j < v.size(); ++j) o[std::to_string(j + 1)] = v[j] ? json(number_text(*v[j])) : json(nullptr);
   return o;
 }
 
 // With an `ask`, only the asked sides (null where undefined).
-json asked_rates_object(const std::vector<std::optional<std::string>>& v, const SceneAsk& ask, bool dot) {
+json asked_rates_object(const std::vector<std::optional<ResultNumber>>& v, const SceneAsk& ask, bool dot) {
   json o = json::object();
   for (const AskedRate& r : ask.rates) {
     if (r.dot != dot) continue;
     const auto& x = v[static_cast<size_t>(std::stoi(r.subject.name) - 1)];
-    o[r.subject.name] = x ? json(*x) : json(nullptr);
+    o[r.subject.name] = x ? json(number_text(*x)) : json(nullptr);
   }
   return o;
 }
@@ -91,7 +100,7 @@ json example_json(const SweepExample& e) {
   json j = case_json(e.polygon);
   j["claim"] = e.claim_id;
   j["verdict"] = std::string(to_string(e.verdict));
-  j["evidence"] = to_json(e.headline);
+  j["evidence"] = evidence_json(e);
   if (!e.error.empty()) j["error"] = e.error;
   return j;
 }
@@ -118,9 +127,9 @@ json to_json(const PolygonCheck& check) {
            {{"n", check.n},
             {"omega", rates_object(check.omega)},
             {"omega_dot", rates_object(check.omega_dot)},
-            {"D", check.determinant},
+            {"D", number_text(check.determinant)},
             {"dead_centre", check.dead_centre}}},
-          {"tolerance_rule", check.tolerance_rule},
+          {"tolerance_rule", tolerance_rule(check.arithmetic)},
           {"claims", claims},
           {"not_applicable", check.not_applicable},
           {"summary", summary},
@@ -154,7 +163,7 @@ json to_json(const SweepReport& s) {
           {"arithmetic", std::string(to_string(o.arithmetic))},
           {"cases", s.cases},
           {"seconds", s.seconds},
-          {"tolerance_rule", s.tolerance_rule},
+          {"tolerance_rule", tolerance_rule(o.arithmetic)},
           {"claims", claims},
           {"unexpected", unexpected},
           {"erratum_counterexamples", disproofs},

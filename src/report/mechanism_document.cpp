@@ -7,6 +7,7 @@
 #include <map>
 
 #include "linkproof/mechanism/fourbar_polygon.h"
+#include "linkproof/report/number_text.h"
 #include "linkproof/report/polygon_document.h"
 #include "svg_plot.h"
 
@@ -16,14 +17,6 @@ namespace {
 
 Point2 to_point(const Vec2<Rational>& p) { return {cln::double_approx(p.x), cln::double_approx(p.y)}; }
 
-// A number of the check's text form ("p/q" exact, or a decimal) as a double.
-double number(const std::string& s) {
-  try {
-    return cln::double_approx(parse_rational(s));
-  } catch (...) {
-    return std::nan("");
-  }
-}
 
 // The joints of link `k` (positions), ordered by angle around their centroid, so that a plate
 // with three or more joints is drawn as a simple polygon.
@@ -84,7 +77,7 @@ Section mechanism_section(const MechanismScene& scene, const MechanismCheck& che
   for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
     links.rows.push_back(
         {plain(check.link_names[k] + (check.link_names[k] == scene.linkage.link_name(scene.linkage.ground()) ? " (ground)" : "")),
-         plain(check.omega[k]), plain(check.omega_dot[k])});
+         plain(number_text(check.omega[k])), plain(number_text(check.omega_dot[k]))});
   if (!links.rows.empty()) {
     s.blocks.push_back(paragraph(plain(std::string("Angular velocity and acceleration of ") +
                                        (check.ask ? "the asked links" : "every link") + " relative to the ground (exact):")));
@@ -92,8 +85,9 @@ Section mechanism_section(const MechanismScene& scene, const MechanismCheck& che
   }
   Table pts{{plain("joint / point"), plain("velocity"), plain("acceleration"), plain("sliding rate, acceleration")}, {}};
   const auto add = [&](const MechanismCheck::PointMotion& p) {
-    pts.rows.push_back({plain(p.name), plain("(" + p.v[0] + ", " + p.v[1] + ")"), plain("(" + p.a[0] + ", " + p.a[1] + ")"),
-                        plain(p.slide.empty() ? "" : p.slide + ", " + p.slide_dot)});
+    pts.rows.push_back({plain(p.name), plain("(" + number_text(p.v[0]) + ", " + number_text(p.v[1]) + ")"),
+                        plain("(" + number_text(p.a[0]) + ", " + number_text(p.a[1]) + ")"),
+                        plain(p.slide ? number_text(*p.slide) + ", " + number_text(*p.slide_dot) : "")});
   };
   for (const auto& p : check.joints) add(p);
   for (const auto& p : check.points) add(p);
@@ -108,7 +102,7 @@ Drawing plan_drawing(const MechanismScene& scene, const MechanismCheck& check, b
   std::map<std::string, Point2> image;
   for (const auto& p : check.joints) {
     const auto& v = acceleration ? p.a : p.v;
-    image[p.name] = {number(v[0]), number(v[1])};
+    image[p.name] = {to_double(v[0]), to_double(v[1])};
   }
   Drawing d;
   d.max_zoom_out = 1;
@@ -123,9 +117,12 @@ Drawing plan_drawing(const MechanismScene& scene, const MechanismCheck& check, b
       for (size_t b = a + 1; b < pts.size(); ++b)
         d.segments.push_back({pts[a], pts[b], palette_color(static_cast<size_t>(k)), Stroke::Thin, false, ""});
   }
-  for (const auto& [name, p] : image) {
+  // In the scene's joint order, not the map's name order: the drawing must not depend on how
+  // names sort (a renamed joint would otherwise move in the SVG).
+  for (const auto& j : check.joints) {
+    const Point2 p = image[j.name];
     d.segments.push_back({origin, p, "#555555", Stroke::Solid, true, ""});
-    d.markers.push_back({p, name, "#222222", false, false});
+    d.markers.push_back({p, j.name, "#222222", false, false});
   }
   d.markers.push_back({origin, "o", "#000000", true, false});
   return d;

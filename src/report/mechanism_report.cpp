@@ -4,7 +4,9 @@
 #include <fmt/ranges.h>
 #include <fmt/ostream.h>
 
+#include "linkproof/report/comparison_text.h"
 #include "linkproof/report/json_report.h"
+#include "linkproof/report/number_text.h"
 
 namespace linkproof {
 
@@ -13,8 +15,8 @@ using nlohmann::json;
 namespace {
 
 json point_json(const MechanismCheck::PointMotion& p) {
-  json j{{"v", {p.v[0], p.v[1]}}, {"a", {p.a[0], p.a[1]}}};
-  if (!p.slide.empty()) j["sliding_v"] = p.slide, j["sliding_a"] = p.slide_dot;
+  json j{{"v", {number_text(p.v[0]), number_text(p.v[1])}}, {"a", {number_text(p.a[0]), number_text(p.a[1])}}};
+  if (p.slide) j["sliding_v"] = number_text(*p.slide), j["sliding_a"] = number_text(*p.slide_dot);
   return j;
 }
 
@@ -40,7 +42,7 @@ void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claim
     if (evidence.empty()) {
       const auto& h = cl.headline;
       evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
-                                                 : fmt::format("{}: {} vs {}", h.label, h.lhs, h.rhs);
+                                                 : fmt::format("{}: {} vs {}", h.label, lhs_text(h), rhs_text(h));
     }
     if (strict && !cl.is_as_expected(true)) evidence += "  <-- NOT AS EXPECTED (strict)";
     fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
@@ -64,8 +66,8 @@ json to_json(const MechanismCheck& c) {
   json links = json::object(), relative = json::object(), joints = json::object(), points = json::object(),
        tables = json::object(), claims = json::array();
   for (size_t l = 0; l < c.link_names.size(); ++l)
-    links[c.link_names[l]] = {{"omega", c.omega[l]}, {"omega_dot", c.omega_dot[l]}};
-  for (const auto& r : c.relative) relative[r.i + "," + r.k] = {{"omega", r.omega}, {"omega_dot", r.omega_dot}};
+    links[c.link_names[l]] = {{"omega", number_text(c.omega[l])}, {"omega_dot", number_text(c.omega_dot[l])}};
+  for (const auto& r : c.relative) relative[r.i + "," + r.k] = {{"omega", number_text(r.omega)}, {"omega_dot", number_text(r.omega_dot)}};
   for (const auto& p : c.joints) joints[p.name] = point_json(p);
   for (const auto& p : c.points) points[p.name] = point_json(p);
   for (const auto& t : c.tables) {
@@ -84,7 +86,7 @@ json to_json(const MechanismCheck& c) {
           {"loops", c.loops},
           {"unknowns", c.unknowns},
           {"condition", c.condition},
-          {"closure_residual", c.closure_residual},
+          {"closure_residual", format_rational(c.closure_residual)},
           {"dimension_residual", c.dimension_residual},
           {"links", links},
           {"relative", relative},
@@ -105,7 +107,7 @@ json to_json(const MechanismCheck& c) {
 void write_text(std::ostream& out, const MechanismCheck& c) {
   fmt::print(out, "scene {} ({} arithmetic)\n", c.scene, to_string(c.arithmetic));
   fmt::print(out, "mobility {} (Gruebler {}), {} loops, {} unknowns, rank {}, condition {:.3g}, closure residual {}\n\n",
-             c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, c.closure_residual);
+             c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, format_rational(c.closure_residual));
   if (!c.arithmetic_note.empty()) fmt::print(out, "note: {}\n\n", c.arithmetic_note);
   if (c.ask)
     fmt::print(out, "asked (the scene's `ask`): {}\ncomputed on the sub-mechanism of links {} ({} of {} links, {} of {} "
@@ -115,14 +117,14 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
   if (!c.ask || !c.link_names.empty()) {
     fmt::print(out, "{:<10} {:>28} {:>28}\n", "link", "omega", "omega_dot");
     for (size_t l = 0; l < c.link_names.size(); ++l)
-      fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], c.omega[l], c.omega_dot[l]);
+      fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], number_text(c.omega[l]), number_text(c.omega_dot[l]));
   }
   if (!c.ask || !c.joints.empty() || !c.points.empty()) fmt::print(out, "\n{:<10} {:>40} {:>40}\n", "joint", "v", "a");
   for (const auto* list : {&c.joints, &c.points})
     for (const auto& p : *list)
-      fmt::print(out, "{:<10} {:>40} {:>40}{}\n", p.name, fmt::format("({}, {})", p.v[0], p.v[1]),
-                 fmt::format("({}, {})", p.a[0], p.a[1]),
-                 p.slide.empty() ? "" : fmt::format("   sliding v {}, a {}", p.slide, p.slide_dot));
+      fmt::print(out, "{:<10} {:>40} {:>40}{}\n", p.name, fmt::format("({}, {})", number_text(p.v[0]), number_text(p.v[1])),
+                 fmt::format("({}, {})", number_text(p.a[0]), number_text(p.a[1])),
+                 p.slide ? fmt::format("   sliding v {}, a {}", number_text(*p.slide), number_text(*p.slide_dot)) : "");
   for (const auto& t : c.tables) {
     fmt::print(out, "\n{}\n", t.title);
     for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);

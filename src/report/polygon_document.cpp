@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "linkproof/geometry/construction.h"
+#include "linkproof/report/number_text.h"
+#include "canonical_latex.h"
 #include "svg_plot.h"
 
 namespace linkproof::report {
@@ -16,11 +18,8 @@ namespace {
 
 using GiNaC::ex;
 
-std::string latex_of(const ex& e) {
-  std::ostringstream o;
-  o << GiNaC::latex << e;
-  return o.str();
-}
+// The same text in every run (GiNaC's own printer follows an order that ASLR moves).
+std::string latex_of(const ex& e) { return canonical_latex(e); }
 
 /// An exact rational as TeX: "-7/3" -> "-\frac{7}{3}".
 std::string rational_tex(const Rational& q) {
@@ -68,7 +67,7 @@ Section summary_section(const PolygonScene& scene, const PolygonCheck& check) {
         const auto& v = (r.dot ? check.omega_dot : check.omega)[static_cast<size_t>(side - 1)];
         t.rows.push_back({tex(std::string(r.dot ? "\\dot\\omega_{" : "\\omega_{") + std::to_string(side) + "," +
                               std::to_string(check.n) + "}"),
-                          plain(v ? *v : "undefined")});
+                          plain(v ? number_text(*v) : "undefined")});
       }
       s.blocks.push_back(table_block(std::move(t)));
     }
@@ -101,8 +100,8 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
     };
     if (check.ask && !asked(false) && !asked(true)) continue;  // only the asked rates
     values.rows.push_back({plain(std::to_string(j) + (j <= m ? " (input)" : j == n ? " (fixed)" : " (solved)")),
-                           plain(w ? *w : check.ask && !asked(false) ? "not asked" : "undefined"),
-                           plain(wd ? *wd : check.ask && !asked(true) ? "not asked" : "undefined")});
+                           plain(w ? number_text(*w) : check.ask && !asked(false) ? "not asked" : "undefined"),
+                           plain(wd ? number_text(*wd) : check.ask && !asked(true) ? "not asked" : "undefined")});
   }
   if (n > kSymbolicReportMaxN) {
     s.blocks.push_back(paragraph(
@@ -268,7 +267,7 @@ Section numerics_section(GroundTruthEngine& engine, const std::vector<Claim>& ca
     double worst = 0;
     int differing = 0;
     for (size_t k = 0; k < c.claims.size(); ++k) {
-      if (c.claims[k].verdict == Verdict::Holds) worst = std::max(worst, c.claims[k].headline.relative_error_bound);
+      if (c.claims[k].verdict == Verdict::Holds) worst = std::max(worst, c.claims[k].headline.floating ? c.claims[k].headline.floating->relative_error_bound : 0.0);
       if (k < exact.claims.size() && c.claims[k].verdict != exact.claims[k].verdict) ++differing;
     }
     t.rows.push_back({plain(std::string(to_string(a))), plain(fmt::format("{:.3g}", worst)),

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "linkproof/report/comparison_text.h"
 #include "linkproof/report/json_report.h"
 
 namespace linkproof {
@@ -106,7 +107,8 @@ void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool
       for (const auto* group : {&c.outcome.instances, &c.outcome.terms})
         for (const auto& t : *group)
           if (t.verdict == Verdict::Fails)
-            fmt::print(out, "    differs: {}: lhs {} vs rhs {} (residual {})\n", t.label, t.lhs, t.rhs, t.residual);
+            fmt::print(out, "    differs: {}: lhs {} vs rhs {} (residual {})\n", t.label, lhs_text(t), rhs_text(t),
+                       residual_text(t));
     }
     out << "\n";
   }

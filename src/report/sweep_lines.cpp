@@ -55,7 +55,7 @@ std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic) {
   for (const auto& [id, v] : c.verdicts) verdicts[id] = std::string(to_string(v));
   json examples = json::array();
   for (const auto& e : c.examples) {
-    json x{{"claim", e.claim_id}, {"verdict", std::string(to_string(e.verdict))}, {"evidence", to_json(e.headline)}};
+    json x{{"claim", e.claim_id}, {"verdict", std::string(to_string(e.verdict))}, {"evidence", evidence_json(e)}};
     if (!e.error.empty()) x["error"] = e.error;
     examples.push_back(std::move(x));
   }
@@ -74,26 +74,19 @@ std::string sweep_summary_line(const SweepReport& report, const Shard& shard) {
   return json{{"summary", s}}.dump();
 }
 
-ComparisonOutcome comparison_from_json(const json& j, const std::string& file, const std::string& field) {
+void check_evidence_json(const json& j, const std::string& file, const std::string& field) {
   if (!j.is_object()) throw InputError(file, field, "must be an object");
-  ComparisonOutcome c;
-  c.label = text(j, "label", file, field);
-  c.verdict = verdict_or_throw(member(j, "verdict", json::value_t::string, file, field), file, field + ".verdict");
-  c.undefined_quantity = optional_text(j, "undefined_quantity", file, field);
-  c.reason = optional_text(j, "reason", file, field);
-  if (c.verdict == Verdict::Undefined || c.verdict == Verdict::Error) return c;
-  c.lhs = text(j, "lhs", file, field);
-  c.rhs = text(j, "rhs", file, field);
-  c.residual = text(j, "residual", file, field);
-  c.tolerance = optional_text(j, "tolerance", file, field);
-  if (!c.tolerance.empty()) {
+  text(j, "label", file, field);
+  const Verdict v = verdict_or_throw(member(j, "verdict", json::value_t::string, file, field), file, field + ".verdict");
+  for (const char* key : {"undefined_quantity", "reason", "tolerance_derivation", "trust_route", "inconclusive_side",
+                          "inconclusive_quantity"})
+    optional_text(j, key, file, field);
+  if (v == Verdict::Undefined || v == Verdict::Error) return;
+  for (const char* key : {"lhs", "rhs", "residual"}) text(j, key, file, field);
+  if (!optional_text(j, "tolerance", file, field).empty()) {
     const auto& b = j.find("relative_error_bound");
     if (b == j.end() || !b->is_number()) throw InputError(file, field + ".relative_error_bound", "missing or not a number");
-    c.relative_error_bound = b->get<double>();
-    c.tolerance_derivation = optional_text(j, "tolerance_derivation", file, field);
   }
-  c.trust_route = optional_text(j, "trust_route", file, field);
-  return c;
 }
 
 SweepLine parse_sweep_line(const std::string& line, const std::string& file, long line_number) {
@@ -166,7 +159,9 @@ SweepLine parse_sweep_line(const std::string& line, const std::string& file, lon
     e.claim_id = text(x, "claim", file, at);
     e.verdict = verdict_or_throw(member(x, "verdict", json::value_t::string, file, at), file, at + ".verdict");
     e.polygon = c.polygon;
-    e.headline = comparison_from_json(member(x, "evidence", json::value_t::object, file, at), file, at + ".evidence");
+    const json& evidence = member(x, "evidence", json::value_t::object, file, at);
+    check_evidence_json(evidence, file, at + ".evidence");
+    e.recorded_evidence = evidence.dump();
     e.error = optional_text(x, "error", file, at);
     const auto v = c.verdicts.find(e.claim_id);
     if (v == c.verdicts.end() || v->second != e.verdict)

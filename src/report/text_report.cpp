@@ -5,6 +5,9 @@
 #include <fmt/ranges.h>
 
 #include "linkproof/io/sweep_scene.h"
+#include "linkproof/report/comparison_text.h"
+#include "linkproof/report/json_report.h"
+#include "linkproof/report/number_text.h"
 
 namespace linkproof {
 
@@ -20,21 +23,32 @@ std::string readable(const std::string& s) {
   return s.substr(0, 22) + "..." + s.substr(mantissa);
 }
 
-std::string value_or_undefined(const std::optional<std::string>& v) { return v ? readable(*v) : "undefined"; }
+std::string value_or_undefined(const std::optional<ResultNumber>& v) { return v ? readable(number_text(*v)) : "undefined"; }
 
-std::string evidence(const ComparisonOutcome& c) {
-  switch (c.verdict) {
-    case Verdict::Undefined: return c.undefined_quantity + " undefined: " + c.reason;
-    case Verdict::Error: return c.reason;
-    default: break;
-  }
-  std::string s = fmt::format("{} = {}  vs  {}", c.label.empty() ? "value" : c.label, readable(c.lhs), readable(c.rhs));
-  if (c.verdict == Verdict::Fails || !c.tolerance.empty()) s += "  residual " + readable(c.residual);
-  if (!c.tolerance.empty()) s += "  tol " + c.tolerance;
-  if (!c.reason.empty()) s += "  (" + c.reason + ")";
-  if (!c.trust_route.empty()) s += "  trust: " + c.trust_route;
+std::string optional_text(const std::optional<ResultNumber>& v) { return v ? number_text(*v) : ""; }
+
+std::string member_text(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
+// A comparison's evidence on one line, from its JSON form (to_json), so that evidence read back
+// from a result file prints as a fresh one does.
+std::string evidence(const nlohmann::json& j) {
+  const std::string verdict = member_text(j, "verdict"), reason = member_text(j, "reason");
+  if (verdict == to_string(Verdict::Undefined)) return member_text(j, "undefined_quantity") + " undefined: " + reason;
+  if (verdict == to_string(Verdict::Error)) return reason;
+  const std::string label = member_text(j, "label"), tolerance = member_text(j, "tolerance");
+  std::string s = fmt::format("{} = {}  vs  {}", label.empty() ? "value" : label, readable(member_text(j, "lhs")),
+                              readable(member_text(j, "rhs")));
+  if (verdict == to_string(Verdict::Fails) || !tolerance.empty()) s += "  residual " + readable(member_text(j, "residual"));
+  if (!tolerance.empty()) s += "  tol " + tolerance;
+  if (!reason.empty()) s += "  (" + reason + ")";
+  if (const std::string t = member_text(j, "trust_route"); !t.empty()) s += "  trust: " + t;
   return s;
 }
+
+std::string evidence(const ComparisonOutcome& c) { return evidence(to_json(c)); }
 
 }  // namespace
 
@@ -57,7 +71,7 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
       fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j]),
                  value_or_undefined(c.omega_dot[j]));
   }
-  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, readable(c.determinant));
+  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, readable(number_text(c.determinant)));
 
   if (!c.claims.empty() || !c.ask) fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
   int unexpected = 0, not_as_expected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
@@ -86,7 +100,7 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
           fmt::print(out, "  {:<22} {:<13} {} undefined: {}\n", t.label, to_string(t.verdict), t.undefined_quantity,
                      t.reason);
         else
-          fmt::print(out, "  {:<22} {:<13} {:<24} {}\n", t.label, to_string(t.verdict), readable(t.lhs), readable(t.rhs));
+          fmt::print(out, "  {:<22} {:<13} {:<24} {}\n", t.label, to_string(t.verdict), readable(optional_text(t.lhs)), readable(optional_text(t.rhs)));
       }
     }
   }
@@ -95,7 +109,7 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
     for (const auto& id : c.not_applicable) fmt::print(out, " {}", id);
     fmt::print(out, "\n");
   }
-  fmt::print(out, "\nverdict rule: {}\n", c.tolerance_rule);
+  fmt::print(out, "\nverdict rule: {}\n", tolerance_rule(c.arithmetic));
   fmt::print(out, "summary: {}/{} true claims hold, {}/{} erratum readings fail here, {} unexpected failure(s), {} not as "
              "expected{}\n",
              true_held, true_total, erratum_failed, erratum_total, unexpected, not_as_expected,
@@ -120,12 +134,12 @@ void write_text(std::ostream& out, const SweepReport& s) {
     fmt::print(out, "\nUNEXPECTED: {} case(s) where a claim expected to hold did not:\n", s.unexpected.size());
     for (const auto& e : s.unexpected) {
       fmt::print(out, "- {} {} on n = {}, index {} ({}): {}\n", e.claim_id, to_string(e.verdict), e.polygon.n,
-                 e.polygon.index, e.polygon.family, e.error.empty() ? evidence(e.headline) : e.error);
+                 e.polygon.index, e.polygon.family, e.error.empty() ? evidence(evidence_json(e)) : e.error);
       fmt::print(out, "  replay: linkproof sweep --n {} --seed {} --index {}\n", e.polygon.n, o.seed, e.polygon.index);
       fmt::print(out, "  scene (exact):\n{}", sweep_scene_yaml(e.polygon));
     }
   }
-  fmt::print(out, "\nverdict rule: {}\n", s.tolerance_rule);
+  fmt::print(out, "\nverdict rule: {}\n", tolerance_rule(o.arithmetic));
 }
 
 }  // namespace linkproof

@@ -6,6 +6,7 @@
 #include "dijksman1966.h"
 #include "linkproof/check/check.h"
 #include "linkproof/core/verdict.h"
+#include "linkproof/report/comparison_text.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::testing {
@@ -23,7 +24,8 @@ ClaimResult from_outcome(const ClaimOutcome& o) {
   else if (!h.undefined_quantity.empty())
     r.detail = fmt::format("{} is undefined: {}", h.undefined_quantity, h.reason);
   else
-    r.detail = fmt::format("{}lhs {} rhs {} residual {}", h.label.empty() ? "" : h.label + ": ", h.lhs, h.rhs, h.residual);
+    r.detail = fmt::format("{}lhs {} rhs {} residual {}", h.label.empty() ? "" : h.label + ": ", lhs_text(h), rhs_text(h),
+                           residual_text(h));
   return r;
 }
 

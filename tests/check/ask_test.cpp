@@ -4,10 +4,14 @@
 
 #include "dijksman1966.h"
 #include "linkproof/check/check.h"
+#include "linkproof/report/comparison_text.h"
+#include "linkproof/report/number_text.h"
 #include "linkproof/io/scene.h"
 
 namespace linkproof {
 namespace {
+
+std::string text_of(const std::optional<ResultNumber>& x) { return x ? number_text(*x) : "(none)"; }
 
 const std::string kPentagon = R"(name: p
 polygon:
@@ -116,9 +120,9 @@ TEST(AskedCheck, AnInputRateNeedsNoEngineAndNoClaim) {
   EXPECT_FALSE(c.computed.construction);
   EXPECT_FALSE(c.computed.closed_forms);
   EXPECT_TRUE(c.claims.empty());
-  EXPECT_EQ(c.omega[0], "2");
-  EXPECT_EQ(c.omega_dot[1], "3");
-  EXPECT_EQ(c.omega[4], "0");
+  EXPECT_EQ(text_of(c.omega[0]), "2");
+  EXPECT_EQ(text_of(c.omega_dot[1]), "3");
+  EXPECT_EQ(text_of(c.omega[4]), "0");
   EXPECT_FALSE(c.omega[3]);  // not asked, not computed
 }
 
@@ -136,7 +140,7 @@ TEST(AskedCheck, ASolvedRateHasTheWholeChecksValueWithoutTheConstruction) {
     EXPECT_EQ(c.omega[2], full.omega[2]);
     EXPECT_EQ(c.determinant, full.determinant);
   }
-  EXPECT_EQ(*run(with_ask("[omega_dot(4)]")).omega_dot[3], "3755/1331");
+  EXPECT_EQ(text_of(run(with_ask("[omega_dot(4)]")).omega_dot[3]), "3755/1331");
 }
 
 TEST(AskedCheck, AskedClaimsHaveTheWholeChecksVerdictsAndEvidence) {
@@ -147,7 +151,7 @@ TEST(AskedCheck, AskedClaimsHaveTheWholeChecksVerdictsAndEvidence) {
     const auto same = std::find_if(all.claims.begin(), all.claims.end(), [&](const auto& x) { return x.info.id == o.info.id; });
     ASSERT_NE(same, all.claims.end());
     EXPECT_EQ(o.verdict, same->verdict);
-    EXPECT_EQ(o.headline.lhs, same->headline.lhs);
+    EXPECT_EQ(lhs_text(o.headline), lhs_text(same->headline));
     EXPECT_EQ(o.terms.size(), same->terms.size());
   }
   // eq5 and eq22 read no four-bar solved on its own.
@@ -166,7 +170,7 @@ ask: [omega(1), omega_dot(4)]
                                              "d.yaml");
   const PolygonCheck c = run(s);
   ASSERT_TRUE(c.dead_centre);
-  EXPECT_EQ(c.omega[0], "1");
+  EXPECT_EQ(text_of(c.omega[0]), "1");
   EXPECT_FALSE(c.omega_dot[3]);
 }
 

@@ -5,6 +5,7 @@
 
 #include "dijksman1966.h"
 #include "linkproof/check/check.h"
+#include "linkproof/report/comparison_text.h"
 #include "linkproof/check/random_polygon.h"
 
 namespace linkproof {
@@ -13,13 +14,13 @@ namespace {
 void expect_same_headline(const ComparisonOutcome& a, const ComparisonOutcome& b, const std::string& where) {
   EXPECT_EQ(a.label, b.label) << where;
   EXPECT_EQ(a.verdict, b.verdict) << where;
-  EXPECT_EQ(a.lhs, b.lhs) << where;
-  EXPECT_EQ(a.rhs, b.rhs) << where;
-  EXPECT_EQ(a.residual, b.residual) << where;
-  EXPECT_EQ(a.tolerance, b.tolerance) << where;
-  EXPECT_EQ(a.trust_route, b.trust_route) << where;
+  EXPECT_EQ(lhs_text(a), lhs_text(b)) << where;
+  EXPECT_EQ(rhs_text(a), rhs_text(b)) << where;
+  EXPECT_EQ(residual_text(a), residual_text(b)) << where;
+  EXPECT_EQ(tolerance_text(a), tolerance_text(b)) << where;
+  EXPECT_EQ(trust_route_text(a), trust_route_text(b)) << where;
   EXPECT_EQ(a.undefined_quantity, b.undefined_quantity) << where;
-  EXPECT_EQ(a.reason, b.reason) << where;
+  EXPECT_EQ(reason_text(a), reason_text(b)) << where;
 }
 
 TEST(CheckEvidence, HeadlineEvidenceGivesTheVerdictsAndHeadlinesOfFullEvidence) {

@@ -94,10 +94,11 @@ std::pair<MechanismScene, MechanismCheck> fourbar(const Strings& f) {
   check.scene = f[0];
   check.mobility = check.grubler = check.rank = check.loops = 1;
   check.link_names = links;
-  check.omega = {"0", "2", "-3/4", "7/20"};
-  check.omega_dot = {"0", "5", "63/160", "3109/800"};
-  for (const auto& j : joints) check.joints.push_back({j.name, {"1", "2"}, {"3", "-4"}, "", ""});
-  check.points.push_back({f[10], {"1/2", "1"}, {"-629/16", "-341/80"}, "", ""});
+  const auto q = [](const char* text) { return ResultNumber(parse_rational(text)); };
+  check.omega = {q("0"), q("2"), q("-3/4"), q("7/20")};
+  check.omega_dot = {q("0"), q("5"), q("63/160"), q("3109/800")};
+  for (const auto& j : joints) check.joints.push_back({j.name, {q("1"), q("2")}, {q("3"), q("-4")}, {}, {}});
+  check.points.push_back({f[10], {q("1/2"), q("1")}, {q("-629/16"), q("-341/80")}, {}, {}});
   ClaimOutcome c;
   c.info.id = f[11];
   c.info.source = f[12];
@@ -107,7 +108,7 @@ std::pair<MechanismScene, MechanismCheck> fourbar(const Strings& f) {
   c.verdict = Verdict::Fails;
   c.headline.label = f[15];
   c.headline.verdict = Verdict::Fails;
-  c.headline.lhs = "1", c.headline.rhs = "2", c.headline.residual = "-1";
+  c.headline.lhs = Rational(1), c.headline.rhs = Rational(2), c.headline.residual = Rational(-1);
   c.terms.push_back(c.headline);
   check.claims.push_back(c);
   check.tables.push_back({f[16], {{f[15], "1/2"}}});

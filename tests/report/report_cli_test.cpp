@@ -49,6 +49,25 @@ TEST(ReportCli, PentagonHtmlHasTheSectionsInOrderWithExactValues) {
   EXPECT_NE(html.find("dijksman1966.eq22"), std::string::npos);
 }
 
+// A report is the same bytes in every run: GiNaC's own LaTeX printer follows an operand order
+// seeded by addresses that ASLR moves (and normal() picks a fraction's signs by it), so the
+// derivation's formulas once differed from run to run (report/canonical_latex.h). Each run is a
+// new process with its own address layout.
+TEST(ReportCli, DerivationIsTheSameBytesInEveryRun) {
+  TempDir dir("pentagon_runs");
+  std::string first;
+  for (int run = 0; run < 4; ++run) {
+    const CliRun r = run_cli({"report", source("verify/scenes/hexagon.yaml"), "--format", "md", "--out", dir.path.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string md = slurp(dir.path / "hexagon.md");
+    ASSERT_NE(md.find("L_1 \\cos(\\theta_{1})+L_2 \\cos(\\theta_{2})"), std::string::npos) << "loop closure in side order";
+    if (run == 0)
+      first = md;
+    else
+      EXPECT_EQ(md, first) << "run " << run << " differs from the first";
+  }
+}
+
 TEST(ReportCli, PentagonMarkdownAndLatexAreWrittenWithFigures) {
   TempDir dir("pentagon_all");
   const CliRun r =

@@ -3,10 +3,10 @@
 //   GroundTruthEngine engine;
 //   PolygonCheck r = check_polygon(engine, dijksman1966::catalogue(), "pentagon", polygon, rates,
 //                                  Arithmetic::Exact);
-//   r.claims[k].verdict, r.omega[j], ... ; exit_status(r) gives the CLI's exit code.
+//   r.claims[k].verdict, r.omega[j], ...
 //
-// Results are values in text form (exact "p/q", or shortest round-trip decimals), so the
-// report layer and callers need not know the scalar type.
+// Results are values (core/result_number.h: exact rationals, or a float midpoint in its own
+// precision with its rigorous radius in the evidence); report/ makes their text.
 #pragma once
 
 #include <optional>
@@ -61,7 +61,7 @@ struct PolygonCheck {
   std::string dead_centre_reason;
   /// omega_{j,n}, omega-dot_{j,n} for j = 1..n (0-based); nullopt where undefined, or not
   /// asked when `ask` restricts (reports show only the asked rates then).
-  std::vector<std::optional<std::string>> omega, omega_dot;
+  std::vector<std::optional<ResultNumber>> omega, omega_dot;
   /// The scene's `ask` (check/ask.h) when it restricts what is computed.
   std::optional<SceneAsk> ask;
   /// What the check computed (claims/polygon_context.h computes each on first use): reports
@@ -69,11 +69,10 @@ struct PolygonCheck {
   struct Computed {
     bool truth = false, closed_forms = false, construction = false, four_bar_truth = false;
   } computed;
-  /// D = r_{n-2} x r_{n-1} in the arithmetic's text form.
-  std::string determinant;
+  /// D = r_{n-2} x r_{n-1} in the arithmetic.
+  ResultNumber determinant;
   std::vector<ClaimOutcome> claims;
   std::vector<std::string> not_applicable;  ///< ids of claims that do not apply to this n
-  std::string tolerance_rule;
   /// --strict: undefined or inconclusive on a true claim is not as expected (exit 1).
   bool strict = false;
 };

@@ -1,5 +1,5 @@
 // Why a floating-point comparison was inconclusive: which quantity's error bound reached its
-// magnitude, so that `trust_route` names it instead of blaming the construction every time.
+// magnitude, so that the trust route (report/comparison_text.h) names it instead of blaming the construction every time.
 //
 // A comparison is inconclusive when a side's bound is unbounded (a divisor's bound reached its
 // magnitude) or too wide (check/judge.h). The judge names the side (the one whose bound is the
@@ -19,20 +19,10 @@
 
 #include <string>
 
+#include "linkproof/check/judge.h"
 #include "linkproof/claims/claim.h"
 
 namespace linkproof {
-
-struct InconclusiveCause {
-  enum class Kind { DeadCentre, Construction, OwnArithmetic };
-  Kind kind = Kind::OwnArithmetic;
-  /// The quantity whose bound is beyond sqrt(u) of its magnitude ("D = r_{n-2} x r_{n-1}",
-  /// "cot beta_2 of four-bar 2 (construction)"); for OwnArithmetic, the widest one read, or empty.
-  std::string quantity;
-  double relative_bound = 0;  ///< bound / |value| of that quantity (display; +inf if unbounded)
-  /// One sentence for trust_route: the quantity and what decides instead.
-  std::string describe() const;
-};
 
 /// Evaluates `claim` again on context.fresh() and searches what it read (see the file comment).
 /// T is one of the Tracked arithmetics of ClaimScalarTypes.

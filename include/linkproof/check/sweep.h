@@ -33,6 +33,9 @@ struct SweepExample {
   RandomPolygonCase polygon;
   ComparisonOutcome headline;
   std::string error;
+  /// For an example read back from a result file: its evidence as the file recorded it (a
+  /// JSON object's text, checked when read); `headline` is then empty.
+  std::string recorded_evidence = {};
 };
 
 struct SweepReport {
@@ -44,7 +47,6 @@ struct SweepReport {
   std::vector<SweepExample> unexpected;
   /// For each erratum reading, one case where it fails (its disproof), if any was seen.
   std::vector<SweepExample> erratum_counterexamples;
-  std::string tolerance_rule;
 
   /// 0 all as expected; 1 a true claim failed; 3 an evaluation error.
   int exit_status() const;

@@ -24,6 +24,7 @@
 
 #include "linkproof/check/arithmetic.h"
 #include "linkproof/check/check.h"
+#include "linkproof/core/result_number.h"
 #include "linkproof/mechanism/mechanism_scene.h"
 #include "linkproof/mechanism/mechanism_solve.h"
 
@@ -66,24 +67,26 @@ struct MechanismCheck {
   /// 1e200 in double): the reason; the motion shown is then the exact one.
   std::string arithmetic_note;
   std::vector<std::string> link_names;
-  /// Text per link (relative to the ground), per joint, per tracer point.
-  std::vector<std::string> omega, omega_dot;
+  /// Per link (relative to the ground), per joint, per tracer point: exact, or the values of
+  /// the floating-point route in its own type.
+  std::vector<ResultNumber> omega, omega_dot;
   struct PointMotion {
     std::string name;
-    std::string v[2], a[2];
-    std::string slide, slide_dot;  ///< prismatic joints only
+    ResultNumber v[2], a[2];
+    std::optional<ResultNumber> slide, slide_dot;  ///< prismatic joints only
   };
   std::vector<PointMotion> joints, points;
   /// Every pair of links i < k (in link order): omega_ik = omega_i - omega_k, and omega-dot_ik.
   struct Relative {
-    std::string i, k, omega, omega_dot;
+    std::string i, k;
+    ResultNumber omega, omega_dot;
   };
   std::vector<Relative> relative;
   std::vector<ReportTable> tables;
   /// 2-norm condition number of the velocity system (constraints + input rows), in double.
   double condition = 0;
-  /// The position closure residual (max |row| at the given joints; "0" when exact).
-  std::string closure_residual;
+  /// The position closure residual (max |row| at the given joints; 0 when exact).
+  Rational closure_residual;
   double dimension_residual = 0;
   std::vector<ClaimOutcome> claims;
   std::vector<std::string> not_applicable;

@@ -18,6 +18,8 @@ nlohmann::json to_json(const ComparisonOutcome& c);
 /// One claim's outcome as in the `claims` list of the check JSON (shared by polygon and mechanism checks).
 nlohmann::json to_json(const ClaimOutcome& c);
 nlohmann::json to_json(const SweepReport& sweep);
+/// An example's evidence: its headline comparison, or the evidence its result file recorded.
+nlohmann::json evidence_json(const SweepExample& e);
 
 /// `j` printed with an indent of 2, bytes that are not valid UTF-8 replaced by U+FFFD: the
 /// readers already escape such bytes in names and statements (io), this is the last guard so that

@@ -55,7 +55,8 @@ SweepLine parse_sweep_line(const std::string& line, const std::string& file, lon
 /// without its "digest" member), as 16 lowercase hex digits.
 std::string sweep_line_digest(const std::string& canonical_line);
 
-/// The inverse of to_json(const ComparisonOutcome&) (report/json_report.h); throws InputError.
-ComparisonOutcome comparison_from_json(const nlohmann::json& j, const std::string& file, const std::string& field);
+/// Checks that `j` has the form of to_json(const ComparisonOutcome&) (report/json_report.h): the
+/// evidence of an example read back is kept as recorded; throws InputError naming the field.
+void check_evidence_json(const nlohmann::json& j, const std::string& file, const std::string& field);
 
 }  // namespace linkproof
