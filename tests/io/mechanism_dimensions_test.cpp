@@ -188,6 +188,21 @@ TEST(MechanismDimensions, DyadThatMissesIsRefusedWithTheMissDistance) {
   EXPECT_NE(concentric.find("concentric"), std::string::npos) << concentric;
 }
 
+TEST(MechanismDimensions, ATangentDyadIsExactWhenRationalAndUndecidableWhenNot) {
+  // Rational data, circles touching: the one point where they meet, exactly (a dead centre).
+  const MechanismScene touching = parse(fourbar("at: [0, 0]", "at: [3, 4]", "dyad: {from: [A, 4], to: [O4, 6], side: left}",
+                                                "at: [11, -2]"));
+  EXPECT_TRUE(given(touching, "B").exact);
+  EXPECT_TRUE(same_point(joint(touching, "B").at, {Rational(3) + Rational(16) / 5, Rational(4) - Rational(12) / 5}));
+  // The same touch with O4 placed at 30deg from A: |A O4| = 4 + 6 exactly, but A and O4 are
+  // enclosures; no precision decides the sign of the discriminant, 0: refused, not guessed.
+  const std::string e = error_of(fourbar("at: [0, 0]", "at: [3, 4]", "dyad: {from: [A, 4], to: [O4, 6], side: left}",
+                                         "polar: {from: A, length: 10, angle: 30deg}"));
+  EXPECT_NE(e.find("mechanism.joints[2].dyad: joint `B`: cannot decide whether the circles about `A` and `O4` meet"),
+            std::string::npos)
+      << e;
+}
+
 // --- slide and at: J
 
 TEST(MechanismDimensions, SlidePicksTheIntersectionAheadOrBehind) {
