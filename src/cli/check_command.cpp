@@ -7,6 +7,7 @@
 #include "linkproof/io/scene.h"
 #include "linkproof/report/curvature_report.h"
 #include "linkproof/report/mechanism_report.h"
+#include "linkproof/report/scene_placement_report.h"
 #include "mechanism_catalogues.h"
 #include "linkproof/report/json_report.h"
 #include "linkproof/report/text_report.h"
@@ -37,9 +38,20 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
                      "applies to polygon scenes only (a mechanism check prints no term-by-term tables): " + a.scene);
   MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), chosen_arithmetic(a.arith, scene.ask));
   check.strict = a.strict;
+  // Positions placed from dimensions: which are exact, which rationalised (never silent, whatever
+  // the arithmetic): JSON keys beside the check's, and a section before the text report.
   // With an ask, only what it names (the second-order work is the `curvature` command's then).
-  if ((scene.curvature.empty() && scene.joint_joining.empty()) || check.ask)
-    return print_report(out, check, a.json, exit_status(check));
+  if ((scene.curvature.empty() && scene.joint_joining.empty()) || check.ask) {
+    if (a.json) {
+      nlohmann::json j = to_json(check);
+      j.update(scene_placement_json(scene));
+      out << json_text(j) << "\n";
+    } else {
+      write_scene_placement_text(out, scene);
+      write_text(out, check);
+    }
+    return exit_status(check);
+  }
   // The scene asks for the second-order work (docs/curvature.md): its claims join the check's,
   // its poles, centres and reductions are added to the report.
   const CurvatureCheck second = check_curvature(scene, {});
@@ -48,8 +60,10 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
   if (a.json) {
     nlohmann::json j = to_json(check);
     j.update(curvature_json(*second.analysis, second.link_names));
+    j.update(scene_placement_json(scene));
     out << j.dump(2) << "\n";
   } else {
+    write_scene_placement_text(out, scene);
     write_text(out, check);
     write_curvature_text(out, *second.analysis, second.link_names);
   }

@@ -5,6 +5,7 @@
 #include "linkproof/io/motion_data.h"
 #include "linkproof/numerics/data_check.h"
 #include "linkproof/report/data_check_report.h"
+#include "linkproof/report/scene_placement_report.h"
 
 namespace linkproof::cli {
 
@@ -15,8 +16,11 @@ struct CheckDataArgs {
   bool json = false;
 };
 
-int run_check_data(const CheckDataArgs& a, std::ostream& out, std::ostream&) {
+int run_check_data(const CheckDataArgs& a, std::ostream& out, std::ostream& err) {
   const MechanismScene scene = load_mechanism_scene(a.scene);
+  // A scene given by dimensions runs on rationalised positions: said, never silent.
+  if (const std::string note = rationalised_statement(scene); !note.empty())
+    err << "linkproof: note: " << a.scene << ": " << note << " (docs/mechanisms.md)\n";
   const MotionData data = load_motion_data(a.data, scene);
   const DataCheck check = check_motion_data(scene, data);
   return print_report(out, check, a.json, exit_status(check));

@@ -4,6 +4,7 @@
 #include "command.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/report/curvature_report.h"
+#include "linkproof/report/scene_placement_report.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::cli {
@@ -15,8 +16,11 @@ struct CurvatureArgs {
   bool json = false;
 };
 
-int run_curvature(const CurvatureArgs& a, std::ostream& out, std::ostream&) {
+int run_curvature(const CurvatureArgs& a, std::ostream& out, std::ostream& err) {
   const MechanismScene scene = load_mechanism_scene(a.scene);
+  // A scene given by dimensions runs on rationalised positions: said, never silent.
+  if (const std::string note = rationalised_statement(scene); !note.empty())
+    err << "linkproof: note: " << a.scene << ": " << note << " (docs/mechanisms.md)\n";
   const CurvatureCheck check = check_curvature(scene, catalogues::second_order_catalogues(scene));
   return print_report(out, check, a.json, exit_status(check));
 }

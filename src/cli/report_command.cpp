@@ -18,6 +18,7 @@
 #include "linkproof/check/check.h"
 #include "linkproof/io/claim_file.h"
 #include "linkproof/io/mechanism_scene.h"
+#include "linkproof/report/scene_placement_report.h"
 #include "linkproof/io/scene.h"
 #include "linkproof/report/atomic_file.h"
 #include "linkproof/report/mechanism_document.h"
@@ -112,6 +113,9 @@ int report_claim_file(const ReportArgs& a, const std::string& text, std::ostream
 
 int report_mechanism(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
   const MechanismScene scene = parse_mechanism_scene(text, a.input);
+  // A scene given by dimensions runs on rationalised positions: said, never silent.
+  if (const std::string note = rationalised_statement(scene); !note.empty())
+    err << "linkproof: note: " << a.input << ": " << note << " (docs/mechanisms.md)\n";
   const MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), Arithmetic::Exact);
   report::Document d = report::build_mechanism_document(scene, check, {a.plans, text});
   d.reproduce = reproduce_of(a, "none (deterministic)");

@@ -10,6 +10,8 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/mechanism/joint_joining.h"
+#include "joint_placement.h"
+#include "quantity_text.h"
 #include "scene_ask.h"
 #include "yaml_document.h"
 
@@ -69,12 +71,12 @@ class MechanismReader {
 
     read_links(m);
     const int ground = link_index(m["ground"], "mechanism.ground", true);
-    std::vector<LinkageJoint> joints = read_joints(m);
+    std::vector<LinkageJoint> joints = read_joints(m, scene.placement);
     // Links first named by joints are known now; the ground must be one of them.
     if (std::string problem = linkage_problem(links_, ground, joints); !problem.empty())
       fail("mechanism.joints", problem);
     scene.linkage = Linkage(links_, ground, std::move(joints));
-    scene.inputs = read_inputs(m, scene.linkage);
+    scene.inputs = read_inputs(m, scene.linkage, scene.placement);
     refuse_zero_length_drivers(scene);
     scene.points = read_points(m);
     if (const YAML::Node t = m["tolerance"]) {
@@ -177,18 +179,168 @@ class MechanismReader {
             read_exact_number(n[1], source_, field + "[1]", "the y of " + what)};
   }
 
-  std::vector<LinkageJoint> read_joints(const YAML::Node& m) {
+  // The joint's name as a reference from another joint's placement.
+  std::string joint_reference(const YAML::Node& n, const std::string& field) const {
+    return name_of(n, field, "a joint's name");
+  }
+
+  // An exact length > 0.
+  Rational read_length(const YAML::Node& n, const std::string& field, const std::string& what) const {
+    const Rational l = read_exact_number(n, source_, field, what);
+    if (!cln::plusp(l)) fail(field, "expected a length > 0 for " + what + ", got " + format_rational(l));
+    return l;
+  }
+
+  // A number, or an angle or rate written with pi and a unit (quantity_text.h). Plain numbers,
+  // booleans and NaN keep the exact-number reader and its messages.
+  PiMultiple read_quantity(const YAML::Node& n, const std::string& field, const std::string& what,
+                           QuantityKind kind) const {
+    if (!n.IsDefined()) fail(field, "missing required field: " + quantity_kind_name(kind) + " for " + what);
+    PiMultiple value;
+    if (n.IsScalar() && looks_like_quantity_expression(n.Scalar()) && !is_reserved_word(n.Scalar())) {
+      try {
+        value = parse_quantity(n.Scalar(), kind);
+      } catch (const std::invalid_argument& e) {
+        fail(field, fmt::format("expected {} for {} ({}), got {}: {}", quantity_kind_name(kind), what,
+                                quantity_examples(kind), backticked(n.Scalar()), e.what()));
+      }
+    } else {
+      value = {read_exact_number(n, source_, field, what), 0};
+    }
+    if (kind == QuantityKind::Angle && !placement::is_angle_within_limit(value))
+      fail(field, fmt::format("the angle {} is beyond {} rad in size (docs/limits.md)", backticked(n.Scalar()),
+                              placement::kMaxAngleRadians));
+    return value;
+  }
+
+  static bool is_reserved_word(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!s.empty() && (s.front() == '+' || s.front() == '-')) s.erase(0, 1);
+    for (const char* w : {"true", "false", "yes", "no", "on", "off", "nan", ".nan", "inf", ".inf", "infinity"})
+      if (s == w) return true;
+    return false;
+  }
+
+  static std::string quantity_examples(QuantityKind kind) {
+    switch (kind) {
+      case QuantityKind::Angle: return "e.g. `30deg`, `pi/6`, `1.2rad`, or a number of radians";
+      case QuantityKind::AngularVelocity: return "e.g. `1500rpm`, `-2000rpm`, `50*pi`, or a number of rad/s";
+      case QuantityKind::AngularAcceleration: return "e.g. `100rpm/s`, `pi/2`, or a number of rad/s^2";
+      case QuantityKind::Sliding: return "a number, possibly with `pi`, `*` and `/`";
+    }
+    return "";
+  }
+
+  // [J, L] of a dyad or slide: a joint's name and a length.
+  std::pair<std::string, Rational> read_centre(const YAML::Node& n, const std::string& field, const std::string& what) const {
+    if (!n || !n.IsSequence() || n.size() != 2)
+      fail(field, "expected [joint, length] for " + what + ", got " +
+                      (n && n.IsSequence() ? fmt::format("{} values", n.size()) : kind_of(n)));
+    return {joint_reference(n[0], field + "[0]"), read_length(n[1], field + "[1]", "the length from that joint")};
+  }
+
+  int read_choice(const YAML::Node& n, const std::string& field, const char* plus, const char* minus,
+                  const std::string& what) const {
+    const std::string v = name_of(n, field, what);
+    if (v == plus) return 1;
+    if (v == minus) return -1;
+    fail(field, fmt::format("expected `{}` or `{}` for {}, got {}", plus, minus, what, backticked(v)));
+  }
+
+  // The joint's placement: exactly one of `at` ([x, y] or a joint's name), `polar`, `dyad`, `slide`.
+  placement::JointSpec read_placement(const YAML::Node& j, const std::string& f, const std::string& name) const {
+    using Kind = placement::JointSpec::Kind;
+    placement::JointSpec s;
+    s.name = name;
+    std::vector<std::string> given;
+    for (const char* key : {"at", "polar", "dyad", "slide"})
+      if (j[key]) given.push_back(key);
+    if (given.empty())
+      fail(f + ".at", "missing required field: the joint position [x, y] (or a placement from dimensions: `at: J`, "
+                      "`polar`, `dyad` or `slide`; docs/mechanisms.md)");
+    if (given.size() > 1)
+      fail(f + "." + given[1], fmt::format("the joint position is given twice, by `{}` and by `{}`: give one",
+                                           given[0], given[1]));
+    const std::string key = given[0];
+    const YAML::Node p = j[key];
+    s.field = f + "." + key;
+    if (key == "at") {
+      if (p.IsScalar()) {
+        s.kind = Kind::AtJoint;
+        s.from = {{joint_reference(p, s.field), s.field}};
+      } else {
+        s.kind = Kind::Point;
+        s.point = read_point(p, s.field, "the joint position");
+      }
+      return s;
+    }
+    if (!p.IsMap()) fail(s.field, fmt::format("expected a map for `{}` (docs/mechanisms.md), got {}", key, kind_of(p)));
+    if (key == "polar") {
+      check_keys(p, s.field + ".", {"from", "length", "angle"});
+      s.kind = Kind::Polar;
+      s.from = {{joint_reference(p["from"], s.field + ".from"), s.field + ".from"}};
+      s.length = read_length(p["length"], s.field + ".length", "the distance from `from`");
+      s.angle = read_quantity(p["angle"], s.field + ".angle", "the direction from `from`", QuantityKind::Angle);
+      s.angle_text = clean_text(p["angle"].Scalar());
+    } else if (key == "dyad") {
+      check_keys(p, s.field + ".", {"from", "to", "side"});
+      s.kind = Kind::Dyad;
+      const auto [j1, l1] = read_centre(p["from"], s.field + ".from", "the first circle");
+      const auto [j2, l2] = read_centre(p["to"], s.field + ".to", "the second circle");
+      s.from = {{j1, s.field + ".from[0]"}, {j2, s.field + ".to[0]"}};
+      s.length = l1, s.length2 = l2;
+      s.side = read_choice(p["side"], s.field + ".side", "left", "right", "the side of the line from `from` to `to`");
+    } else {
+      check_keys(p, s.field + ".", {"line", "from", "pick"});
+      s.kind = Kind::Slide;
+      const YAML::Node line = p["line"];
+      if (!line || !line.IsSequence() || line.size() != 2)
+        fail(s.field + ".line", "expected [joint, angle] for the line, got " +
+                                    (line && line.IsSequence() ? fmt::format("{} values", line.size()) : kind_of(line)));
+      const std::string through = joint_reference(line[0], s.field + ".line[0]");
+      s.angle = read_quantity(line[1], s.field + ".line[1]", "the line's direction", QuantityKind::Angle);
+      s.angle_text = clean_text(line[1].Scalar());
+      const auto [centre, l] = read_centre(p["from"], s.field + ".from", "the circle");
+      s.from = {{through, s.field + ".line[0]"}, {centre, s.field + ".from[0]"}};
+      s.length = l;
+      s.side = read_choice(p["pick"], s.field + ".pick", "ahead", "behind",
+                           "the intersection to take (farther along the line's direction, or nearer)");
+    }
+    return s;
+  }
+
+  // A prismatic axis: a direction [x, y], or an angle (an exactly unit rational direction).
+  Vec2<Rational> read_axis(const YAML::Node& n, const std::string& field, const std::string& joint,
+                           ScenePlacement& placement) const {
+    if (!n || !n.IsScalar()) return read_point(n, field, "the guide direction");
+    const PiMultiple angle = read_quantity(n, field, "the guide direction", QuantityKind::Angle);
+    const placement::RationalisedDirection d = placement::rationalise_direction(angle);
+    placement.axes.push_back({joint, "axis angle " + clean_text(n.Scalar()), d.exact, d.bound});
+    return d.unit;
+  }
+
+  // The scene's size for rationalising positions: its largest given coordinate or length.
+  static Rational scene_scale(const std::vector<placement::JointSpec>& specs) {
+    Rational scale = 0;
+    for (const auto& s : specs) {
+      for (const Rational& v : {s.point.x, s.point.y, s.length, s.length2}) scale = cln::max(scale, cln::abs(v));
+    }
+    return cln::zerop(scale) ? Rational(1) : scale;
+  }
+
+  std::vector<LinkageJoint> read_joints(const YAML::Node& m, ScenePlacement& placement) {
     const YAML::Node js = m["joints"];
     if (!js) fail("mechanism.joints", "missing required field `joints`: the list of joints");
     if (!js.IsSequence() || js.size() == 0)
       fail("mechanism.joints", "expected a non-empty list of joints, got " + kind_of(js));
     if (js.size() > 2000) fail("mechanism.joints", fmt::format("expected at most 2000 joints, got {}", js.size()));
     std::vector<LinkageJoint> out;
+    std::vector<placement::JointSpec> specs;
     for (size_t i = 0; i < js.size(); ++i) {
       const std::string f = fmt::format("mechanism.joints[{}]", i);
       const YAML::Node j = js[i];
       if (!j.IsMap()) fail(f, "expected a map {name, type, links, at[, axis]}, got " + kind_of(j));
-      check_keys(j, f + ".", {"name", "type", "links", "at", "axis"});
+      check_keys(j, f + ".", {"name", "type", "links", "at", "polar", "dyad", "slide", "axis"});
       LinkageJoint joint;
       joint.name = name_of(j["name"], f + ".name", "the joint's name");
       for (const auto& o : out)
@@ -204,19 +356,41 @@ class MechanismReader {
       for (int s = 0; s < 2; ++s) joint.links[s] = link_index(ls[s], fmt::format("{}.links[{}]", f, s), true);
       if (joint.links[0] == joint.links[1])
         fail(f + ".links", "joint " + backticked(joint.name) + " names the same link twice: a joint needs two different links");
-      joint.at = read_point(j["at"], f + ".at", "the joint position");
+      specs.push_back(read_placement(j, f, joint.name));
       if (joint.type == JointType::Prismatic) {
-        joint.axis = read_point(j["axis"], f + ".axis", "the guide direction");
+        joint.axis = read_axis(j["axis"], f + ".axis", joint.name, placement);
         if (is_zero_vector(joint.axis)) fail(f + ".axis", "zero axis: the guide direction of a prismatic pair must be non-zero");
       } else if (j["axis"]) {
         fail(f + ".axis", "only a prismatic joint has an axis");
       }
       out.push_back(std::move(joint));
     }
+    // Positions: given ones as read, the others constructed in the order their references allow.
+    const placement::Placement placed = placement::place_joints(specs, scene_scale(specs), source_);
+    static const std::map<placement::JointSpec::Kind, std::string> kind_names = {
+        {placement::JointSpec::Kind::Point, "at"},     {placement::JointSpec::Kind::AtJoint, "at joint"},
+        {placement::JointSpec::Kind::Polar, "polar"},  {placement::JointSpec::Kind::Dyad, "dyad"},
+        {placement::JointSpec::Kind::Slide, "slide"}};
+    for (size_t i = 0; i < out.size(); ++i) {
+      const placement::PlacedJoint& p = placed.joints[i];
+      out[i].at = p.at;
+      placement.joints.push_back({out[i].name, kind_names.at(specs[i].kind), p.exact, p.bound});
+    }
     return out;
   }
 
-  std::vector<MechanismInput> read_inputs(const YAML::Node& m, const Linkage& g) {
+  // An input's rate: a number, or an expression with pi and a unit, rationalised when it is not a
+  // rational number (recorded in `placement.rates`).
+  Rational read_rate(const YAML::Node& n, const std::string& field, const std::string& what, QuantityKind kind,
+                     ScenePlacement& placement) const {
+    const PiMultiple q = read_quantity(n, field, what, kind);
+    if (!n.IsScalar() || !looks_like_quantity_expression(n.Scalar())) return q.coefficient;
+    const placement::RationalisedNumber r = placement::rationalise_number(q);
+    placement.rates.push_back({field.substr(std::string("mechanism.").size()), clean_text(n.Scalar()), r.exact, r.bound});
+    return r.value;
+  }
+
+  std::vector<MechanismInput> read_inputs(const YAML::Node& m, const Linkage& g, ScenePlacement& placement) {
     const YAML::Node in = m["inputs"];
     if (!in) fail("mechanism.inputs", "missing required field `inputs`: one per degree of freedom");
     if (!in.IsSequence()) fail("mechanism.inputs", "expected a list of inputs, got " + kind_of(in));
@@ -231,8 +405,9 @@ class MechanismReader {
         x.kind = MechanismInput::Kind::Link;
         x.index = link_index(n["link"], f + ".link", false);
         if (x.index == g.ground()) fail(f + ".link", "an input on the ground link: its rates are 0 by definition");
-        x.rate = read_exact_number(n["omega"], source_, f + ".omega", "omega of the input link");
-        x.rate_dot = read_exact_number(n["omega_dot"], source_, f + ".omega_dot", "omega-dot of the input link");
+        x.rate = read_rate(n["omega"], f + ".omega", "omega of the input link", QuantityKind::AngularVelocity, placement);
+        x.rate_dot = read_rate(n["omega_dot"], f + ".omega_dot", "omega-dot of the input link",
+                               QuantityKind::AngularAcceleration, placement);
       } else if (n["joint"]) {
         check_keys(n, f + ".", {"joint", "v", "a"});
         x.kind = MechanismInput::Kind::Slider;
@@ -242,8 +417,8 @@ class MechanismReader {
         if (g.joint(*j).type != JointType::Prismatic)
           fail(f + ".joint", "joint " + backticked(name) + " is revolute: a slider input needs a prismatic joint");
         x.index = *j;
-        x.rate = read_exact_number(n["v"], source_, f + ".v", "the sliding velocity");
-        x.rate_dot = read_exact_number(n["a"], source_, f + ".a", "the sliding acceleration");
+        x.rate = read_rate(n["v"], f + ".v", "the sliding velocity", QuantityKind::Sliding, placement);
+        x.rate_dot = read_rate(n["a"], f + ".a", "the sliding acceleration", QuantityKind::Sliding, placement);
       } else {
         fail(f, "an input names a `link` (with omega, omega_dot) or a prismatic `joint` (with v, a)");
       }
@@ -365,18 +540,26 @@ class MechanismReader {
       const double actual = std::sqrt(cln::double_approx(d2));
       const double residual = std::abs(actual - cln::double_approx(dim.length));
       scene.dimension_residual = std::max(scene.dimension_residual, residual);
+      // A rationalised joint is within `bound` of its dimensioned position in each coordinate, so
+      // |AB| may differ from the dimensioned distance by sqrt(2) (bound_A + bound_B) <= slack.
+      const auto& given = scene.placement.joints;
+      const Rational slack = given.empty() ? Rational(0)
+                                           : 3 * (given[static_cast<size_t>(idx[0])].bound +
+                                                  given[static_cast<size_t>(idx[1])].bound) / 2;
       bool ok;
-      if (!scene.tolerance) {
+      if (!scene.tolerance && cln::zerop(slack)) {
         ok = d2 == dim.length * dim.length;
       } else {
-        const Rational lo = cln::max(Rational(0), dim.length - *scene.tolerance), hi = dim.length + *scene.tolerance;
+        const Rational allowed = scene.tolerance.value_or(0) + slack;
+        const Rational lo = cln::max(Rational(0), dim.length - allowed), hi = dim.length + allowed;
         ok = lo * lo <= d2 && d2 <= hi * hi;
       }
       if (!ok)
         fail(f, fmt::format("the linkage does not close at the given positions: |{}{}| = {:.6g} but the declared "
-                            "length is {} ({}); move the joints or state a `tolerance`",
+                            "length is {} ({}{}); move the joints or state a `tolerance`",
                             ja.name, jb.name, actual, format_rational(dim.length),
-                            scene.tolerance ? "tolerance " + format_rational(*scene.tolerance) : "exact input: no tolerance"));
+                            scene.tolerance ? "tolerance " + format_rational(*scene.tolerance) : "exact input: no tolerance",
+                            cln::zerop(slack) ? "" : ", plus the rationalisation of the positions"));
       scene.dimensions.push_back(dim);
     }
   }

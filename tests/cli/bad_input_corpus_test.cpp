@@ -489,6 +489,96 @@ const std::vector<Case>& corpus() {
                                          write_temp("cd_columns.csv", header + "\n")};
        },
        2, "20002 columns; the limit is 20000", "", ""},
+      // --- issue 27: mechanisms from dimensions; a scene that cannot be placed names the joint
+      {"DimensionsDyadThatDoesNotAssembleNamesTheMissDistance",
+       [] {
+         return std::vector<std::string>{
+             "check", write_temp("dims_dyad.yaml",
+                                 "name: fb\nmechanism:\n  ground: g\n  joints:\n"
+                                 "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+                                 "    - {name: A, type: revolute, links: [crank, coupler], polar: {from: O2, length: 40, angle: 180deg}}\n"
+                                 "    - {name: B, type: revolute, links: [coupler, rocker], dyad: {from: [A, 120], to: [O4, 80], side: left}}\n"
+                                 "    - {name: O4, type: revolute, links: [rocker, g], at: [210, 0]}\n"
+                                 "  inputs:\n    - {link: crank, omega: 1500rpm, omega_dot: 0}\n")};
+       },
+       2, "mechanism.joints[2].dyad: joint `B` cannot be placed: the circle about `A` (radius 120) and the circle "
+          "about `O4` (radius 80) do not meet: their centres are 250 apart, more than 120 + 80 = 200; the dyad misses by 50",
+       "", ""},
+      {"DimensionsSlideThatDoesNotAssembleNamesTheMissDistance",
+       [] {
+         return std::vector<std::string>{
+             "check", write_temp("dims_slide.yaml",
+                                 "name: sc\nmechanism:\n  ground: g\n  joints:\n"
+                                 "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+                                 "    - {name: A, type: revolute, links: [crank, rod], polar: {from: O2, length: 50, angle: 60deg}}\n"
+                                 "    - {name: B, type: revolute, links: [rod, slider], slide: {line: [O2, 0deg], from: [A, 40], pick: ahead}}\n"
+                                 "    - {name: D, type: prismatic, links: [g, slider], at: B, axis: 0deg}\n"
+                                 "  inputs:\n    - {link: crank, omega: -2000rpm, omega_dot: 0}\n")};
+       },
+       2, "joint `B` cannot be placed: the line through `O2` at the angle 0deg passes 43.3013 from `A`, farther than "
+          "the length 40: it misses the circle by 3.30127",
+       "", ""},
+      {"DimensionsMissAsJsonNamesTheField",
+       [] {
+         return std::vector<std::string>{
+             "check", "--json", write_temp("dims_slide_json.yaml",
+                                           "name: sc\nmechanism:\n  ground: g\n  joints:\n"
+                                           "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+                                           "    - {name: A, type: revolute, links: [crank, rod], at: [3, 4]}\n"
+                                           "    - {name: B, type: revolute, links: [rod, slider], slide: {line: [O2, 0deg], from: [A, 3], pick: ahead}}\n"
+                                           "    - {name: D, type: prismatic, links: [g, slider], at: B, axis: [1, 0]}\n"
+                                           "  inputs:\n    - {link: crank, omega: 1, omega_dot: 0}\n")};
+       },
+       2, "misses the circle by 1", "\"field\": \"mechanism.joints[2].slide\"", ""},
+      {"DimensionsCycleNamesTheJoint",
+       [] {
+         return std::vector<std::string>{
+             "check", write_temp("dims_cycle.yaml",
+                                 "name: fb\nmechanism:\n  ground: g\n  joints:\n"
+                                 "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+                                 "    - {name: A, type: revolute, links: [crank, coupler], polar: {from: B, length: 5, angle: 0}}\n"
+                                 "    - {name: B, type: revolute, links: [coupler, rocker], dyad: {from: [A, 10], to: [O4, 10], side: left}}\n"
+                                 "    - {name: O4, type: revolute, links: [rocker, g], at: [11, 0]}\n"
+                                 "  inputs:\n    - {link: crank, omega: 2, omega_dot: 5}\n")};
+       },
+       2, "mechanism.joints[1].polar: joint `A` cannot be placed from placed joints: its position depends on itself (A -> B -> A)",
+       "", ""},
+      {"DimensionsUnknownJointIsNamed",
+       [] { return std::vector<std::string>{"check", write_temp("dims_unknown.yaml", fourbar("[3, 4]", "O5", "[11, 0]"))}; },
+       2, "mechanism.joints[2].at: unknown joint `O5`: joint `B` is placed from it", "", ""},
+      {"DimensionsAngleInDegreesSpelledOutIsRefused",
+       [] {
+         std::string scene = fourbar("[3, 4]", "[11, 10]", "[11, 0]");
+         scene.replace(scene.find("at: [3, 4]"), 10, "polar: {from: O2, length: 5, angle: 53 degrees}");
+         return std::vector<std::string>{"check", write_temp("dims_degrees.yaml", scene)};
+       },
+       2, "mechanism.joints[1].polar.angle: expected an angle for the direction from `from`", "", ""},
+      {"DimensionsAngleOfTenMillionRadiansIsRefused",
+       [] {
+         std::string scene = fourbar("[3, 4]", "[11, 10]", "[11, 0]");
+         scene.replace(scene.find("at: [3, 4]"), 10, "polar: {from: O2, length: 5, angle: 1e7}");
+         return std::vector<std::string>{"check", write_temp("dims_1e7.yaml", scene)};
+       },
+       2, "the angle `1e7` is beyond 1000000 rad in size", "", ""},
+      {"DimensionsRpmIsNotASlidingVelocity",
+       [] {
+         return std::vector<std::string>{
+             "check", write_temp("dims_v_rpm.yaml",
+                                 "name: sc\nmechanism:\n  ground: g\n  joints:\n"
+                                 "    - {name: O2, type: revolute, links: [g, crank], at: [0, 0]}\n"
+                                 "    - {name: A, type: revolute, links: [crank, rod], at: [3, 4]}\n"
+                                 "    - {name: B, type: revolute, links: [rod, slider], at: [6, 0]}\n"
+                                 "    - {name: D, type: prismatic, links: [g, slider], at: B, axis: [1, 0]}\n"
+                                 "  inputs:\n    - {joint: D, v: 1500rpm, a: 0}\n")};
+       },
+       2, "mechanism.inputs[0].v: expected a sliding rate", "", ""},
+      {"DimensionsRpmPerSecondIsNotAnOmega",
+       [] {
+         std::string scene = fourbar("[3, 4]", "[11, 10]", "[11, 0]");
+         scene.replace(scene.find("omega: 2,"), 9, "omega: 1500rpm/s,");
+         return std::vector<std::string>{"check", write_temp("dims_omega_rpms.yaml", scene)};
+       },
+       2, "the unit `rpm/s` is for an angular acceleration; an angular velocity takes `rpm` or no unit", "", ""},
   };
   return cases;
 }

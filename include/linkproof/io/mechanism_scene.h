@@ -13,7 +13,7 @@
 //       - {name: "01", type: revolute,  links: ["0", "1"], at: [0, 0]}
 //       - {name: "D",  type: prismatic, links: ["0", "4"], at: [117349/1000, -26785/1000], axis: [1, 0]}
 //     inputs:                                       # as many as the mobility
-//       - {link: "1", omega: 1, omega_dot: 1/2}     # rates relative to the ground
+//       - {link: "1", omega: 1, omega_dot: 1/2}     # rates relative to the ground (or 1500rpm)
 //       - {joint: "D", v: 2, a: 0}                  # a slider: sigma-dot, sigma-ddot along axis
 //     points:                                       # optional tracer points (e.g. a coupler point)
 //       - {name: P, link: "3", at: [9, 14]}
@@ -31,6 +31,26 @@
 // - A joint has a unique name, `type` revolute or prismatic, exactly two different links and a
 //   point `at`; a prismatic joint also a non-zero `axis` (links[0] is the guide that carries the
 //   axis, links[1] the slider: mechanism/linkage.h). Every link must be connected to the ground.
+// - Mechanisms from dimensions: instead of `at: [x, y]` a joint may be placed from joints
+//   placed before it (in any order of the list that allows it; a cycle or an unknown name is an
+//   InputError naming the joint):
+//     at: J                                          the position of joint J (a slider at a pin)
+//     polar: {from: J, length: L, angle: A}          J + L (cos A, sin A), A from +x counter-clockwise
+//     dyad: {from: [J1, L1], to: [J2, L2], side: left}   the circles about J1 and J2 meet on the
+//                                                    left (or right) of the directed line J1 -> J2
+//     slide: {line: [J, A], from: [J2, L], pick: ahead}   the line through J at angle A meets the
+//                                                    circle about J2: farther along the line
+//                                                    (ahead) or nearer (behind)
+//   and an `axis` may be an angle. Angles: `30deg`, `1.2rad`, `pi/6` or plain radians (numbers,
+//   `pi`, `*`, `/`, a leading minus, a unit); an input's omega takes `1500rpm` (signed), its
+//   omega_dot `rpm/s`. Circles that do not meet, or a line that misses its circle, are refused
+//   naming the joint and the distance by which they miss. Exact data stay exact (a rational
+//   cos/sin, a rational intersection); a position, direction or rate that is not a rational is
+//   computed as a certified enclosure (io/joint_placement.h) and replaced by a rational within
+//   a stated bound, 60 digits below the scene's scale: `placement` in the scene records which
+//   values are exact and which are rationalised, and within what. An axis given as an angle is
+//   an exactly unit rational direction. Declared `dimensions` between rationalised joints hold
+//   within the tolerance plus the bounds.
 // - Closure: the links are the rigid bodies through their joints, so joint positions close every
 //   loop by construction. Declared `dimensions` are what positions read from data can violate:
 //   without `tolerance` each must hold exactly, with it within the tolerance; otherwise the
@@ -55,7 +75,8 @@ MechanismScene load_mechanism_scene(const std::string& path);
 MechanismScene parse_mechanism_scene(const std::string& yaml_text, const std::string& source);
 
 /// Writes the scene in the schema above (without `description`; `links` listed in link order,
-/// every number exact: integers plain, fractions "p/q"), so that
+/// every number exact: integers plain, fractions "p/q"; every joint `at: [x, y]`, the rationals
+/// used for a scene given by dimensions, so its `placement` is not written), so that
 /// parse_mechanism_scene(mechanism_scene_to_yaml(s), s.source) describes the same mechanism:
 /// the same links, joints, inputs, points, dimensions, tolerance and catalogues. Used to print a
 /// generated or failing case as a file `linkproof check` reads (linkproof/testing.h).

@@ -39,6 +39,30 @@ struct JointJoiningRequest {
   int order = 2;
 };
 
+/// How one value of the scene was given (io/mechanism_scene.h, "Mechanisms from dimensions"):
+/// a joint position `at: [x, y]` or placed by `polar`, `dyad`, `slide` or `at: J`; a prismatic
+/// axis given as an angle; an input rate given with pi or rpm. The engine works on exact
+/// rationals: a value that is not a rational (or not known to be one) is replaced by a rational
+/// within `bound` of it, and everything computed from the scene is exact for that rational.
+struct GivenValue {
+  std::string subject;   ///< the joint's name, or the input's field ("inputs[0].omega")
+  std::string given_by;  ///< "at", "at joint", "polar", "dyad", "slide", "axis angle", or the text ("1500rpm")
+  bool exact = true;     ///< the rational used is the given value exactly
+  Rational bound = 0;    ///< else |used - given| <= bound, for each coordinate
+};
+
+/// The provenance of the scene's positions, axes and rates (all exact for a scene that gives
+/// every joint `at: [x, y]` and every rate as a number).
+struct ScenePlacement {
+  std::vector<GivenValue> joints;  ///< one per joint, in joint order
+  std::vector<GivenValue> axes;    ///< prismatic axes given as an angle
+  std::vector<GivenValue> rates;   ///< input rates given as an expression (pi, rpm)
+  /// True when some value is not exact: the check runs on rationalised values.
+  bool is_rationalised() const;
+  /// True when some joint is placed from dimensions or some value given as an expression.
+  bool is_dimensioned() const;
+};
+
 struct MechanismScene {
   std::string name;
   std::string source;
@@ -55,6 +79,22 @@ struct MechanismScene {
   double dimension_residual = 0;
   /// Top-level `ask` (check/ask.h): the links, points and claims to compute (nullopt: everything).
   std::optional<SceneAsk> ask;
+  /// How positions, axes and rates were given, and which were rationalised (io/mechanism_scene.h).
+  ScenePlacement placement;
 };
+
+inline bool ScenePlacement::is_rationalised() const {
+  for (const auto* list : {&joints, &axes, &rates})
+    for (const GivenValue& v : *list)
+      if (!v.exact) return true;
+  return false;
+}
+
+inline bool ScenePlacement::is_dimensioned() const {
+  if (!axes.empty() || !rates.empty()) return true;
+  for (const GivenValue& v : joints)
+    if (v.given_by != "at") return true;
+  return false;
+}
 
 }  // namespace linkproof
