@@ -23,17 +23,16 @@ ResultFile::ResultFile(const std::string& path, bool resume, const LineVisitor& 
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "--out", "cannot be read");
     std::string line;
-    long complete_bytes = 0;
+    long complete_bytes = 0, number = 0;
     while (std::getline(in, line)) {
       if (in.eof()) break;  // no newline: a line cut off by a crash
       complete_bytes += static_cast<long>(line.size()) + 1;
-      visit(line, ++lines_read_);
+      visit(line, ++number);
     }
     const long size = static_cast<long>(std::filesystem::file_size(path, ec));
     if (size > complete_bytes) {
       std::filesystem::resize_file(path, static_cast<std::uintmax_t>(complete_bytes), ec);
       if (ec) throw InputError(path, "--out", "cannot cut off the incomplete last line: " + ec.message());
-      bytes_cut_ = size - complete_bytes;
     }
   }
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);

@@ -1,7 +1,5 @@
 #include "linkproof/claims/vocabulary.h"
 
-#include "linkproof/core/error.h"
-
 namespace linkproof {
 
 const std::vector<Word>& vocabulary() {
@@ -70,12 +68,6 @@ const Word* find_word(const std::string& name, int arity) {
   for (const Word& w : vocabulary())
     if (w.name == name && w.arity == arity) return &w;
   return nullptr;
-}
-
-const Word& word_named(const std::string& name) {
-  for (const Word& w : vocabulary())
-    if (w.name == name) return w;
-  throw InternalError("no word '" + name + "' in the vocabulary");
 }
 
 int word_code(const Word& w) { return static_cast<int>(&w - vocabulary().data()); }

@@ -7,12 +7,6 @@
 
 namespace linkproof {
 
-double ConditionEstimate::predicted_log2_error(int precision_bits) const {
-  if (!defined || !std::isfinite(condition)) return std::numeric_limits<double>::infinity();
-  if (condition <= 0) return -std::numeric_limits<double>::infinity();
-  return std::log2(condition) - precision_bits;
-}
-
 namespace {
 
 template <class T>

@@ -38,16 +38,11 @@ class ResultFile {
 
   /// Appends `line` and a newline (retrying after EINTR and short writes); InputError on failure.
   void append(const std::string& line);
-  /// Lines in the file when it was opened (complete ones), and bytes cut off the end.
-  long lines_read() const { return lines_read_; }
-  long bytes_cut() const { return bytes_cut_; }
   const std::string& path() const { return path_; }
 
  private:
   std::string path_;
   int fd_ = -1;
-  long lines_read_ = 0;
-  long bytes_cut_ = 0;
 };
 
 }  // namespace linkproof

@@ -37,8 +37,6 @@ struct Word {
 const std::vector<Word>& vocabulary();
 /// The word called `name` with `arity` arguments, or nullptr.
 const Word* find_word(const std::string& name, int arity);
-/// The word called `name` (names are unique); a name not in the vocabulary is a bug.
-const Word& word_named(const std::string& name);
 /// Index of a word in vocabulary().
 int word_code(const Word& w);
 

@@ -3,12 +3,11 @@
 //   intersect_lines     the point where two lines meet (Q_j, P'_j, P_j)
 //   directed_ratio      XA / XB of directed segments on one line (i_{n-1,j}, i_{n-2,j})
 //   cot_signed_angle    cot of the signed angle at a vertex (beta_j, gamma_j)
-// Each comes in two forms that share the arithmetic:
-//   * a plain form that writes the result and returns a StepStatus: no exception, no string,
-//     no allocation (the hot path of the construction route, numerics/routes.h);
-//   * a throwing form (`construct_...`, `compute_...`) that names the undefined quantity and
-//     why (docs/conventions.md §A6): the `_lazy` variants take callables for the names, so that strings are made
-//     only when a quantity is undefined.
+// Each writes its result and returns a StepStatus: no exception, no string, no allocation (the
+// hot path of the construction route, numerics/routes.h). The `require_...` functions turn a
+// status into an UndefinedQuantity that names the quantity and why (docs/conventions.md §A6);
+// they take callables for the names, so that strings are made only when a quantity is
+// undefined. compute_directed_ratio is the throwing form of directed_ratio.
 // Every step tests its divisors with linkproof::is_zero: exactly for exact and symbolic T (for
 // symbolic T each test is recorded as a place where the result may fail, core/symbolic_scalar.h),
 // and "exactly zero" for floating-point T.
@@ -100,21 +99,6 @@ void require_angle(StepStatus s, const NameFn& name, const RaysFn& rays) {
   throw InternalError("require_angle: " + name() + " was not computed");
 }
 
-/// intersect_lines, throwing UndefinedQuantity(name(), ...) where the point does not exist.
-template <class T, class NameFn, class LinesFn>
-Vec2<T> construct_line_intersection_lazy(const Vec2<T>& p, const Vec2<T>& u, const Vec2<T>& q, const Vec2<T>& v,
-                                         const NameFn& name, const LinesFn& lines) {
-  Vec2<T> x;
-  require_intersection(intersect_lines(p, u, q, v, x), name, lines);
-  return x;
-}
-
-template <class T>
-Vec2<T> construct_line_intersection(const Vec2<T>& p, const Vec2<T>& u, const Vec2<T>& q, const Vec2<T>& v,
-                                    const std::string& name, const std::string& lines) {
-  return construct_line_intersection_lazy(p, u, q, v, [&] { return name; }, [&] { return lines; });
-}
-
 /// directed_ratio, throwing UndefinedQuantity(name(), ...) if B = X.
 template <class T, class NameFn>
 T compute_directed_ratio_lazy(const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>& b, const NameFn& name) {
@@ -126,19 +110,6 @@ T compute_directed_ratio_lazy(const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>&
 template <class T>
 T compute_directed_ratio(const Vec2<T>& x, const Vec2<T>& a, const Vec2<T>& b, const std::string& name) {
   return compute_directed_ratio_lazy(x, a, b, [&] { return name; });
-}
-
-/// cot_signed_angle, throwing UndefinedQuantity(name(), ...) where the angle has no cotangent.
-template <class T, class NameFn, class RaysFn>
-T compute_cot_signed_angle_lazy(const Vec2<T>& va, const Vec2<T>& vb, const NameFn& name, const RaysFn& rays) {
-  T c{};
-  require_angle(cot_signed_angle(va, vb, c), name, rays);
-  return c;
-}
-
-template <class T>
-T compute_cot_signed_angle(const Vec2<T>& va, const Vec2<T>& vb, const std::string& name, const std::string& rays) {
-  return compute_cot_signed_angle_lazy(va, vb, [&] { return name; }, [&] { return rays; });
 }
 
 }  // namespace linkproof

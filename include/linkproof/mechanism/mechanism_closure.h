@@ -27,13 +27,7 @@ class MechanismClosure {
  public:
   explicit MechanismClosure(const Linkage& g);
 
-  /// The closure rows as functions of theta and sigma (before differentiation).
-  const std::vector<GiNaC::ex>& position_rows() const { return position_; }
-  /// First and second time derivative at theta = sigma = 0.
-  const std::vector<GiNaC::ex>& velocity_rows() const { return velocity_; }
-  const std::vector<GiNaC::ex>& acceleration_rows() const { return acceleration_; }
-  /// Symbols of the unknowns q-dot and q-ddot, in Linkage's unknown order.
-  const std::vector<GiNaC::symbol>& rate_symbols() const { return rate_; }
+  /// Symbols of the unknowns q-ddot, in Linkage's unknown order.
   const std::vector<GiNaC::symbol>& rate_dot_symbols() const { return rate_dot_; }
 
   /// A: coefficient of q-dot_c in velocity row r (exact).

@@ -7,7 +7,6 @@
 // range (a 1000-digit evaluation errs by ~1e-1000) are measured, not flushed to zero.
 #pragma once
 
-#include <cmath>
 #include <limits>
 #include <string>
 
@@ -23,9 +22,6 @@ struct ErrorMeasure {
   /// log2(1 + |computed - exact| / ulp_p(exact)): 0 when the result is exact, about 1 when it is
   /// within an ulp of the arithmetic, p when no digit is right. 0 for exact arithmetic (p = 0).
   double error_bits = 0;
-
-  /// The relative error as a double (0 if it is below double's range).
-  double relative_error() const { return std::exp2(log2_relative_error); }
 };
 
 /// log2 |q| for a nonzero rational, accurate to double precision whatever the size of q;

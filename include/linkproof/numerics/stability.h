@@ -42,10 +42,9 @@ struct ConditionEstimate {
   /// route (infinite if a divisor is not distinguishable from zero), omega-dot_{n-1,n}, n-2.
   double bound_double_n1 = 0, bound_double_n2 = 0;
   double bound_long_double_n1 = 0, bound_long_double_n2 = 0;
-  /// bound_double / u_double: the route's condition on this configuration (max of both sides).
+  /// bound_double / u_double: the route's condition on this configuration (max of both sides);
+  /// a p-bit evaluation's relative error is predicted as condition * 2^-p.
   double condition = 0;
-  /// Predicted relative error of a p-bit evaluation: condition * 2^-p.
-  double predicted_log2_error(int precision_bits) const;
 };
 
 struct StudyOptions {

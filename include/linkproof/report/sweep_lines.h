@@ -29,7 +29,6 @@ namespace linkproof {
 struct Shard {
   int k = 1, n = 1;
   bool whole() const { return n == 1; }
-  bool owns(long c) const { return c % n == k - 1; }
 };
 
 /// One case as a result-file line (no trailing newline).

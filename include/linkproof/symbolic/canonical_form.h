@@ -83,7 +83,6 @@ class CanonicalForm {
   Split split(const GiNaC::ex& e);
 
   const Node& node(Id id) const { return nodes_[id]; }
-  size_t node_count() const { return nodes_.size(); }
 
   /// A total order of primitive parts that is the same in every run: <0, 0, >0.
   int compare(Id a, Id b) const;

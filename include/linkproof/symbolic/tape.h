@@ -43,7 +43,6 @@ class Tape {
        std::string denominator_name);
 
   size_t input_count() const { return input_count_; }
-  size_t output_count() const { return outputs_.size(); }
   /// Number of instructions: the size of the shared DAG.
   size_t size() const { return code_.size(); }
 
