@@ -95,20 +95,18 @@ std::string inconclusive_quantity(const ComparisonOutcome& c) {
 }
 
 std::string cause_text(const InconclusiveCause& cause) {
-  switch (cause.kind) {
-    case InconclusiveCause::Kind::DeadCentre:
-      return fmt::format(
-          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): near the dead centre every route "
-          "divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, docs/conventions.md §A6), so no floating-point route is better; exact "
-          "arithmetic (--arith exact) or a longer precision (--arith mp1000) decides",
-          cause.quantity, cause.relative_bound);
-    case InconclusiveCause::Kind::Construction:
-      return fmt::format(
-          "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): the construction loses digits near "
-          "its pole (docs/conventions.md §A6) while the closed forms and the engine keep full accuracy; exact arithmetic "
-          "(--arith exact) decides",
-          cause.quantity, cause.relative_bound);
-    case InconclusiveCause::Kind::OwnArithmetic: break;
+  if (cause.kind != InconclusiveCause::Kind::OwnArithmetic) {
+    const std::string quantity = fmt::format(
+        "the quantity: {}, whose error bound is {:.3g} of its magnitude (beyond sqrt(u), the judge's limit): ",
+        cause.quantity, cause.relative_bound);
+    if (cause.kind == InconclusiveCause::Kind::DeadCentre)
+      return quantity +
+             "near the dead centre every route divides by D (omega ~ 1/D, omega-dot ~ 1/D^3, docs/conventions.md §A6), "
+             "so no floating-point route is better; exact arithmetic (--arith exact) or a longer precision (--arith "
+             "mp1000) decides";
+    return quantity +
+           "the construction loses digits near its pole (docs/conventions.md §A6) while the closed forms and the engine "
+           "keep full accuracy; exact arithmetic (--arith exact) decides";
   }
   return fmt::format(
       "no quantity the claim reads has an error bound beyond sqrt(u) of its magnitude{}: the digits were lost in the claim's "
