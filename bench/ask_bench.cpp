@@ -10,9 +10,9 @@
 
 #include "bench_cases.h"
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
+#include "check/check_polygon.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::bench {
 namespace {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "linkproof/check/random_polygon.h"
+#include "check/random_polygon.h"
 
 namespace linkproof::bench {
 

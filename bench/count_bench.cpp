@@ -8,7 +8,7 @@
 
 #include "bench_cases.h"
 #include "dijksman1966_counting.h"
-#include "linkproof/count/counting.h"
+#include "count/counting.h"
 
 namespace linkproof::bench {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "bench_cases.h"
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
+#include "check/check_polygon.h"
 
 namespace linkproof::bench {
 namespace {

@@ -8,9 +8,9 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_cases.h"
-#include "linkproof/numerics/adaptive.h"
-#include "linkproof/numerics/ladder.h"
-#include "linkproof/numerics/routes.h"
+#include "numerics/adaptive.h"
+#include "numerics/ladder.h"
+#include "numerics/routes.h"
 
 namespace linkproof::bench {
 namespace {

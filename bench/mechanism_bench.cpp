@@ -5,10 +5,10 @@
 
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism_chain.h"
-#include "linkproof/mechanism/dijksman_compound.h"
-#include "linkproof/mechanism/mechanism_check.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
-#include "linkproof/mechanism/mechanism_closure.h"
+#include "mechanism/dijksman_compound.h"
+#include "mechanism/mechanism_catalogue.h"
+#include "mechanism/mechanism_vector_route.h"
+#include "mechanism/mechanism_closure.h"
 
 namespace linkproof {
 namespace {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "bench_cases.h"
-#include "linkproof/geometry/closed_forms.h"
-#include "linkproof/geometry/construction.h"
-#include "linkproof/symbolic/ground_truth.h"
+#include "geometry/closed_forms.h"
+#include "geometry/construction.h"
+#include "symbolic/ground_truth.h"
 
 namespace linkproof::bench {
 namespace {

@@ -14,8 +14,8 @@
 
 #include "dijksman1966.h"
 #include "dijksman1966_counting.h"
-#include "linkproof/mechanism/mechanism_check.h"
-#include "linkproof/proof/prove.h"
+#include "mechanism/mechanism_catalogue.h"
+#include "proof/prove.h"
 #include "mechanism_chain.h"
 
 namespace linkproof {

@@ -6,7 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "dijksman1966.h"
-#include "linkproof/batch/batch_sweep.h"
+#include "batch/batch_sweep.h"
 
 namespace linkproof::bench {
 namespace {

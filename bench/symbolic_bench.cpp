@@ -7,7 +7,7 @@
 
 #include <memory>
 
-#include "linkproof/symbolic/ground_truth.h"
+#include "symbolic/ground_truth.h"
 
 namespace linkproof::bench {
 namespace {

@@ -1,4 +1,4 @@
-#include "linkproof/batch/batch_sweep.h"
+#include "batch/batch_sweep.h"
 
 #include <chrono>
 #include <filesystem>
@@ -9,12 +9,12 @@
 
 #include <fmt/format.h>
 
-#include "linkproof/batch/case_sink.h"
-#include "linkproof/batch/interrupt.h"
-#include "linkproof/core/time_budget.h"
-#include "linkproof/batch/progress_bar.h"
-#include "linkproof/batch/worker_pool.h"
-#include "linkproof/io/sweep_scene.h"
+#include "batch/case_sink.h"
+#include "batch/interrupt.h"
+#include "core/time_budget.h"
+#include "batch/progress_bar.h"
+#include "batch/worker_pool.h"
+#include "io/sweep_scene.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/batch/case_sink.h"
+#include "batch/case_sink.h"
 
 #include <algorithm>
 #include <set>
@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "linkproof/batch/batch_sweep.h"
+#include "batch/batch_sweep.h"
 
 namespace linkproof {
 

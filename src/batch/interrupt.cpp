@@ -1,4 +1,4 @@
-#include "linkproof/batch/interrupt.h"
+#include "batch/interrupt.h"
 
 #include <csignal>
 

@@ -1,4 +1,4 @@
-#include "linkproof/batch/merge.h"
+#include "batch/merge.h"
 
 #include <chrono>
 #include <cstdio>
@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "linkproof/batch/batch_sweep.h"
-#include "linkproof/batch/case_sink.h"
+#include "batch/batch_sweep.h"
+#include "batch/case_sink.h"
 
 namespace linkproof {
 

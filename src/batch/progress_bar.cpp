@@ -1,4 +1,4 @@
-#include "linkproof/batch/progress_bar.h"
+#include "batch/progress_bar.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>

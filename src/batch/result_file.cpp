@@ -1,4 +1,4 @@
-#include "linkproof/batch/result_file.h"
+#include "batch/result_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "linkproof/batch/worker_pool.h"
+#include "batch/worker_pool.h"
 
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -13,7 +13,7 @@
 
 #include <fmt/format.h>
 
-#include "linkproof/batch/interrupt.h"
+#include "batch/interrupt.h"
 #include "linkproof/core/error.h"
 
 namespace linkproof {

@@ -1,4 +1,4 @@
-#include "linkproof/check/check.h"
+#include "check/check_polygon.h"
 
 #include <cln/float.h>
 
@@ -6,7 +6,8 @@
 #include <new>
 #include <optional>
 
-#include "linkproof/check/inconclusive_cause.h"
+#include "check/inconclusive_cause.h"
+#include "check/scalar_dispatch.h"
 
 namespace linkproof {
 
@@ -87,7 +88,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
       if (found) break;
     }
   } catch (const UndefinedQuantity& u) {
-    out.mark_undefined(u);
+    out.mark_undefined(u.quantity(), u.reason());
   } catch (const cln::floating_point_exception& e) {
     // CLN long floats (mp arithmetics) have no denormals or infinity: underflow and overflow
     // throw (core/multiprecision.h). The precision says nothing here, so neither may the verdict.

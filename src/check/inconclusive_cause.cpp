@@ -1,4 +1,4 @@
-#include "linkproof/check/inconclusive_cause.h"
+#include "check/inconclusive_cause.h"
 
 #include <cln/float.h>
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "linkproof/check/judge.h"
+#include "check/judge.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "linkproof/check/random_polygon.h"
+#include "check/random_polygon.h"
 
 #include <algorithm>
 #include <cmath>

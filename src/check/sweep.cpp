@@ -1,8 +1,8 @@
-#include "linkproof/check/sweep.h"
+#include "check/sweep.h"
 
 #include <chrono>
 
-#include "linkproof/check/sweep_tally.h"
+#include "check/sweep_tally.h"
 
 namespace linkproof {
 

@@ -1,4 +1,5 @@
-#include "linkproof/check/sweep_case.h"
+#include "check/sweep_case.h"
+#include "check/check_polygon.h"
 
 #include <fmt/format.h>
 

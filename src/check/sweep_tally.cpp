@@ -1,4 +1,4 @@
-#include "linkproof/check/sweep_tally.h"
+#include "check/sweep_tally.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/claims/claim_expression.h"
+#include "claims/claim_expression.h"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "linkproof/claims/vocabulary.h"
+#include "claims/vocabulary.h"
 #include "linkproof/core/error.h"
 
 namespace linkproof {

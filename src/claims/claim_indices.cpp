@@ -1,11 +1,11 @@
-#include "linkproof/claims/claim_indices.h"
+#include "claims/claim_indices.h"
 
 #include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "linkproof/claims/vocabulary.h"
+#include "claims/vocabulary.h"
 #include "linkproof/core/error.h"
 
 namespace linkproof {

@@ -1,4 +1,4 @@
-#include "linkproof/claims/claim.h"
+#include "claims/claim.h"
 
 #include "linkproof/core/error.h"
 

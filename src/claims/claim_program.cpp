@@ -1,11 +1,11 @@
-#include "linkproof/claims/claim_program.h"
+#include "claims/claim_program.h"
 
 #include <memory>
 #include <unordered_map>
 
-#include "linkproof/claims/claim_expression.h"
+#include "claims/claim_expression.h"
 #include "linkproof/core/error.h"
-#include "linkproof/core/symbolic_scalar.h"
+#include "core/symbolic_scalar.h"
 
 namespace linkproof {
 namespace {

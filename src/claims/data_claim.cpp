@@ -1,4 +1,4 @@
-#include "linkproof/claims/data_claim.h"
+#include "claims/data_claim.h"
 
 #include <memory>
 

@@ -1,4 +1,4 @@
-#include "linkproof/claims/rate_poly.h"
+#include "claims/rate_poly.h"
 
 #include <algorithm>
 #include <charconv>

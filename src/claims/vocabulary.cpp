@@ -1,4 +1,4 @@
-#include "linkproof/claims/vocabulary.h"
+#include "claims/vocabulary.h"
 
 namespace linkproof {
 

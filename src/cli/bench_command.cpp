@@ -10,9 +10,9 @@
 #include "cli.h"
 #include "command.h"
 #include "linkproof/core/error.h"
-#include "linkproof/numerics/bench_study.h"
-#include "linkproof/report/bench_report.h"
-#include "linkproof/report/json_report.h"
+#include "numerics/bench_study.h"
+#include "report/bench_report.h"
+#include "report/json_report.h"
 
 namespace linkproof::cli {
 

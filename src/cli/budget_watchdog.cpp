@@ -17,7 +17,7 @@
 
 #include "cli.h"
 #include "command.h"
-#include "linkproof/core/time_budget.h"
+#include "core/time_budget.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define LINKPROOF_UNDER_ASAN 1

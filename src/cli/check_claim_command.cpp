@@ -9,13 +9,14 @@
 
 #include "cli.h"
 #include "command.h"
-#include "linkproof/io/claim_file.h"
-#include "linkproof/claims/vocabulary.h"
-#include "linkproof/check/random_polygon.h"
+#include "io/claim_file.h"
+#include "claims/vocabulary.h"
+#include "check/random_polygon.h"
 #include "linkproof/io/scene.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/prove_report.h"
-#include "linkproof/report/text_report.h"
+#include "report/json_report.h"
+#include "report/prove_report.h"
+#include "report/text_report.h"
+#include "check/check_polygon.h"
 
 namespace linkproof::cli {
 

@@ -2,15 +2,15 @@
 // SCENE is a polygon scene (io/scene.h) or a mechanism scene (io/mechanism_scene.h).
 #include "command.h"
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
+#include "check/check_polygon.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/io/scene.h"
-#include "linkproof/report/curvature_report.h"
-#include "linkproof/report/mechanism_report.h"
-#include "linkproof/report/scene_placement_report.h"
+#include "report/curvature_report.h"
+#include "report/mechanism_report.h"
+#include "report/scene_placement_report.h"
 #include "mechanism_catalogues.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/text_report.h"
+#include "report/json_report.h"
+#include "report/text_report.h"
 
 namespace linkproof::cli {
 

@@ -2,10 +2,10 @@
 // Recorded motion against the exact truth at the recorded positions (numerics/data_check.h).
 #include "command.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/io/motion_data.h"
-#include "linkproof/numerics/data_check.h"
-#include "linkproof/report/data_check_report.h"
-#include "linkproof/report/scene_placement_report.h"
+#include "io/motion_data.h"
+#include "numerics/data_check.h"
+#include "report/data_check_report.h"
+#include "report/scene_placement_report.h"
 
 namespace linkproof::cli {
 

@@ -2,7 +2,7 @@
 // `report` on a claim file.
 #include "command.h"
 #include "linkproof/core/error.h"
-#include "linkproof/proof/prove.h"
+#include "proof/prove.h"
 
 namespace linkproof::cli {
 

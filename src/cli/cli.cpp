@@ -11,7 +11,7 @@
 #include "command.h"
 #include "error_report.h"
 #include "linkproof/core/error.h"
-#include "linkproof/core/time_budget.h"
+#include "core/time_budget.h"
 
 namespace linkproof::cli {
 

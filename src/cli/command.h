@@ -16,8 +16,8 @@
 
 #include "linkproof/check/arithmetic.h"
 #include "linkproof/check/ask.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/io/claim_file.h"
+#include "report/json_report.h"
+#include "io/claim_file.h"
 
 namespace linkproof::cli {
 

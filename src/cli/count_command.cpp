@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include "command.h"
-#include "linkproof/core/time_budget.h"
+#include "core/time_budget.h"
 #include "dijksman1966_counting.h"
 #include "linkproof/core/error.h"
-#include "linkproof/report/count_report.h"
+#include "report/count_report.h"
 
 namespace linkproof::cli {
 

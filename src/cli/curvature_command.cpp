@@ -3,8 +3,8 @@
 // mechanism scene (docs/curvature.md), with their claims, exact.
 #include "command.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/report/curvature_report.h"
-#include "linkproof/report/scene_placement_report.h"
+#include "report/curvature_report.h"
+#include "report/scene_placement_report.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::cli {

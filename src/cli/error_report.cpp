@@ -5,7 +5,7 @@
 
 #include <regex>
 
-#include "linkproof/report/json_report.h"
+#include "report/json_report.h"
 
 namespace linkproof::cli {
 

@@ -1,9 +1,9 @@
 // linkproof merge --out FILE SHARD_FILE... [--scenes DIR] [--json]
 #include "command.h"
 #include "dijksman1966.h"
-#include "linkproof/batch/merge.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/text_report.h"
+#include "batch/merge.h"
+#include "report/json_report.h"
+#include "report/text_report.h"
 
 namespace linkproof::cli {
 

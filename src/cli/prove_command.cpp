@@ -3,7 +3,7 @@
 
 #include "command.h"
 #include "dijksman1966.h"
-#include "linkproof/report/prove_report.h"
+#include "report/prove_report.h"
 
 namespace linkproof::cli {
 

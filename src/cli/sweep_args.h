@@ -8,8 +8,8 @@
 #include <string>
 
 #include "command.h"
-#include "linkproof/check/sweep.h"
-#include "linkproof/report/sweep_lines.h"
+#include "check/sweep.h"
+#include "report/sweep_lines.h"
 
 namespace linkproof::cli {
 

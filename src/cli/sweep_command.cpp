@@ -9,11 +9,11 @@
 #include <fmt/ostream.h>
 
 #include "dijksman1966.h"
-#include "linkproof/batch/batch_sweep.h"
-#include "linkproof/batch/result_file.h"
-#include "linkproof/batch/worker_pool.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/text_report.h"
+#include "batch/batch_sweep.h"
+#include "batch/result_file.h"
+#include "batch/worker_pool.h"
+#include "report/json_report.h"
+#include "report/text_report.h"
 #include "sweep_args.h"
 
 namespace linkproof::cli {

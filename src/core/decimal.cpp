@@ -1,4 +1,4 @@
-#include "linkproof/core/decimal.h"
+#include "linkproof/core/exact.h"
 
 #include <cln/float.h>
 #include <cln/integer.h>

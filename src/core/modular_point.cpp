@@ -1,4 +1,4 @@
-#include "linkproof/core/modular_point.h"
+#include "core/modular_point.h"
 
 #include <cln/integer.h>
 #include <cln/rational.h>

@@ -1,4 +1,4 @@
-#include "linkproof/core/multiprecision.h"
+#include "core/multiprecision.h"
 
 #include <sstream>
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "linkproof/core/directed_rounding.h"
+#include "core/directed_rounding.h"
 
 namespace linkproof {
 

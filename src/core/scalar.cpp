@@ -1,4 +1,4 @@
-#include "linkproof/core/scalar.h"
+#include "core/scalar.h"
 
 #include <cln/float.h>
 #include <cln/integer.h>
@@ -124,5 +124,10 @@ template Rational exact_value_of<long double>(long double);
 
 template struct ScalarTraits<Tracked<double>>;
 template struct ScalarTraits<Tracked<long double>>;
+
+// For consumers of the public vec2.h / polygon.h, which see only the declaration of from_rational.
+template double from_rational<double>(const Rational&);
+template long double from_rational<long double>(const Rational&);
+template Rational from_rational<Rational>(const Rational&);
 
 }  // namespace linkproof

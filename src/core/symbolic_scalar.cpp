@@ -1,9 +1,9 @@
-#include "linkproof/core/symbolic_scalar.h"
+#include "core/symbolic_scalar.h"
 
 #include <sstream>
 
 #include "linkproof/core/error.h"
-#include "linkproof/core/modular_point.h"
+#include "core/modular_point.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/core/time_budget.h"
+#include "core/time_budget.h"
 
 #include <atomic>
 #include <chrono>

@@ -14,8 +14,8 @@
 #include <limits>
 
 #include "linkproof/core/error.h"
-#include "linkproof/core/multiprecision.h"
-#include "linkproof/core/scalar.h"
+#include "core/multiprecision.h"
+#include "core/scalar.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/count/compound_count.h"
+#include "count/compound_count.h"
 
 #include <algorithm>
 #include <charconv>

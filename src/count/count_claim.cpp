@@ -1,4 +1,4 @@
-#include "linkproof/count/count_claim.h"
+#include "count/count_claim.h"
 
 #include <algorithm>
 

@@ -1,9 +1,9 @@
-#include "linkproof/count/counting.h"
+#include "count/counting.h"
 
 #include <algorithm>
 #include <chrono>
 
-#include "linkproof/geometry/closed_forms.h"
+#include "geometry/closed_forms.h"
 
 namespace linkproof {
 

@@ -1,10 +1,10 @@
-#include "linkproof/io/claim_file.h"
+#include "io/claim_file.h"
 
 #include <cctype>
 #include <charconv>
 #include <set>
 
-#include "linkproof/claims/claim_indices.h"
+#include "claims/claim_indices.h"
 #include "linkproof/core/error.h"
 #include "yaml_document.h"
 

@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "enclosure.h"
-#include "linkproof/core/decimal.h"
+#include "linkproof/core/exact.h"
 #include "linkproof/core/error.h"
 #include "yaml_document.h"
 

@@ -9,11 +9,12 @@
 #include <set>
 
 #include "linkproof/core/error.h"
-#include "linkproof/mechanism/joint_joining.h"
+#include "mechanism/joint_joining.h"
 #include "joint_placement.h"
 #include "quantity_text.h"
 #include "scene_ask.h"
 #include "yaml_document.h"
+#include "geometry/zero_vector.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/io/motion_data.h"
+#include "io/motion_data.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "linkproof/core/error.h"
-#include "linkproof/core/scalar.h"
+#include "core/scalar.h"
 #include "yaml_document.h"
 
 namespace linkproof {

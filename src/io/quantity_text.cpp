@@ -7,7 +7,7 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "linkproof/io/input_limits.h"
+#include "io/input_limits.h"
 
 namespace linkproof {
 

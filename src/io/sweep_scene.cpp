@@ -1,4 +1,4 @@
-#include "linkproof/io/sweep_scene.h"
+#include "io/sweep_scene.h"
 
 #include <fmt/format.h>
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "linkproof/core/error.h"
-#include "linkproof/io/input_limits.h"
+#include "io/input_limits.h"
 
 namespace linkproof::yaml_io {
 

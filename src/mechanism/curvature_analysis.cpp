@@ -1,4 +1,6 @@
-#include "linkproof/mechanism/curvature_analysis.h"
+#include "mechanism/curvature_analysis.h"
+#include "geometry/zero_vector.h"
+#include "mechanism/mechanism_catalogue.h"
 
 #include <fmt/format.h>
 

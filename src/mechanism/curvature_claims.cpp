@@ -1,7 +1,8 @@
 // The claims of mechanism/curvature_analysis.h, on a finished analysis.
 #include <fmt/format.h>
 
-#include "linkproof/mechanism/curvature_analysis.h"
+#include "mechanism/curvature_analysis.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/mechanism/dijksman_compound.h"
+#include "mechanism/dijksman_compound.h"
 
 #include <fmt/format.h>
 

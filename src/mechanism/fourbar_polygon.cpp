@@ -1,4 +1,4 @@
-#include "linkproof/mechanism/fourbar_polygon.h"
+#include "mechanism/fourbar_polygon.h"
 
 namespace linkproof {
 

@@ -1,9 +1,9 @@
-#include "linkproof/mechanism/joint_joining.h"
+#include "mechanism/joint_joining.h"
 
 #include <fmt/format.h>
 
-#include "linkproof/mechanism/curvature.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "mechanism/curvature.h"
+#include "mechanism/mechanism_vector_route.h"
 
 namespace linkproof {
 

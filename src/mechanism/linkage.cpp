@@ -5,6 +5,7 @@
 #include <deque>
 
 #include "linkproof/core/error.h"
+#include "geometry/zero_vector.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 
 #include <Eigen/SVD>
 #include <cln/float.h>
@@ -11,9 +11,10 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "linkproof/mechanism/mechanism_vector_route.h"
-#include "linkproof/mechanism/mechanism_closure.h"
-#include "linkproof/mechanism/sub_mechanism.h"
+#include "mechanism/mechanism_vector_route.h"
+#include "mechanism/mechanism_closure.h"
+#include "mechanism/sub_mechanism.h"
+#include "check/scalar_dispatch.h"
 
 namespace linkproof {
 
@@ -134,7 +135,7 @@ ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismCon
       for (const auto& o : *list)
         if (o.verdict == v && out.headline.label.empty()) out.headline = o;
   } catch (const UndefinedQuantity& u) {
-    out.mark_undefined(u);
+    out.mark_undefined(u.quantity(), u.reason());
   } catch (const std::bad_alloc&) {
     throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
   } catch (const std::exception& e) {
@@ -363,5 +364,7 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
 }
 
 int exit_status(const MechanismCheck& check) { return exit_status(check.claims, check.strict); }
+
+MechanismCheck check_mechanism(const MechanismScene& s, Arithmetic a) { return check_mechanism(s, {}, a); }
 
 }  // namespace linkproof

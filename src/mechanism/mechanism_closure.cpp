@@ -1,9 +1,9 @@
-#include "linkproof/mechanism/mechanism_closure.h"
+#include "mechanism/mechanism_closure.h"
 
 #include <fmt/format.h>
 
 #include "linkproof/core/error.h"
-#include "linkproof/symbolic/time_derivative.h"
+#include "symbolic/time_derivative.h"
 
 namespace linkproof {
 

@@ -1,9 +1,9 @@
-#include "linkproof/mechanism/relative_rates.h"
+#include "mechanism/relative_rates.h"
 
 #include <optional>
 
 #include "linkproof/core/error.h"
-#include "linkproof/geometry/closed_forms.h"
+#include "geometry/closed_forms.h"
 
 namespace linkproof {
 

@@ -1,10 +1,10 @@
-#include "linkproof/mechanism/sub_mechanism.h"
+#include "mechanism/sub_mechanism.h"
 
 #include <algorithm>
 #include <functional>
 
-#include "linkproof/mechanism/mechanism_solve.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "mechanism/mechanism_solve.h"
+#include "mechanism/mechanism_vector_route.h"
 
 namespace linkproof {
 

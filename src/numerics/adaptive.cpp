@@ -1,4 +1,4 @@
-#include "linkproof/numerics/adaptive.h"
+#include "numerics/adaptive.h"
 
 #include <cmath>
 #include <limits>
@@ -7,9 +7,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "linkproof/core/a_priori_bound.h"
-#include "linkproof/numerics/omega_dot_fraction.h"
-#include "linkproof/numerics/routes.h"
+#include "core/a_priori_bound.h"
+#include "numerics/omega_dot_fraction.h"
+#include "numerics/routes.h"
 
 namespace linkproof {
 

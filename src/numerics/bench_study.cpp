@@ -1,4 +1,4 @@
-#include "linkproof/numerics/bench_study.h"
+#include "numerics/bench_study.h"
 
 #include <fmt/format.h>
 
@@ -8,8 +8,8 @@
 #include <map>
 
 #include "linkproof/core/error.h"
-#include "linkproof/numerics/adaptive.h"
-#include "linkproof/check/random_polygon.h"
+#include "numerics/adaptive.h"
+#include "check/random_polygon.h"
 
 namespace linkproof {
 

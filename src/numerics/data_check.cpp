@@ -1,4 +1,4 @@
-#include "linkproof/numerics/data_check.h"
+#include "numerics/data_check.h"
 
 #include <fmt/format.h>
 
@@ -11,10 +11,10 @@
 #include <cln/rational.h>
 
 #include "linkproof/core/error.h"
-#include "linkproof/core/scalar.h"
-#include "linkproof/core/tracked.h"
-#include "linkproof/mechanism/mechanism_solve.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "core/scalar.h"
+#include "core/tracked.h"
+#include "mechanism/mechanism_solve.h"
+#include "mechanism/mechanism_vector_route.h"
 
 namespace linkproof {
 

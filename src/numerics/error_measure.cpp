@@ -1,4 +1,4 @@
-#include "linkproof/numerics/error_measure.h"
+#include "numerics/error_measure.h"
 
 #include <cln/integer.h>
 #include <cln/rational.h>

@@ -1,8 +1,8 @@
-#include "linkproof/numerics/extreme_families.h"
+#include "numerics/extreme_families.h"
 
 #include <cln/integer.h>
 
-#include "linkproof/check/random_polygon.h"
+#include "check/random_polygon.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/numerics/routes.h"
+#include "numerics/routes.h"
 
 namespace linkproof {
 

@@ -1,9 +1,9 @@
-#include "linkproof/numerics/stability.h"
+#include "numerics/stability.h"
 
 #include <cmath>
 #include <limits>
 
-#include "linkproof/numerics/ladder.h"
+#include "numerics/ladder.h"
 
 namespace linkproof {
 

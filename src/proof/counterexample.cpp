@@ -1,12 +1,13 @@
-#include "linkproof/proof/counterexample.h"
+#include "proof/counterexample.h"
 
 #include <chrono>
 
 #include <cln/integer.h>
 
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/core/time_budget.h"
+#include "check/random_polygon.h"
+#include "core/time_budget.h"
 #include "linkproof/io/scene.h"
+#include "check/check_polygon.h"
 
 namespace linkproof {
 

@@ -5,7 +5,7 @@
 #include <unordered_set>
 #include <utility>
 
-#include "linkproof/core/symbolic_scalar.h"
+#include "core/symbolic_scalar.h"
 
 namespace linkproof::proof_detail {
 

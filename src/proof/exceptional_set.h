@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "linkproof/claims/polygon_context.h"
-#include "linkproof/proof/prove.h"
+#include "claims/polygon_context.h"
+#include "proof/prove.h"
 #include "rational_normal.h"
 #include "symbolic_polygon.h"
 

@@ -1,9 +1,9 @@
-#include "linkproof/proof/lift.h"
+#include "proof/lift.h"
 
 #include <chrono>
 #include <set>
 
-#include "linkproof/core/symbolic_scalar.h"
+#include "core/symbolic_scalar.h"
 #include "rational_normal.h"
 #include "symbolic_polygon.h"
 

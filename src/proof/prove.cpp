@@ -1,4 +1,4 @@
-#include "linkproof/proof/prove.h"
+#include "proof/prove.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,10 +6,10 @@
 #include <set>
 
 #include "exceptional_set.h"
-#include "linkproof/core/symbolic_scalar.h"
-#include "linkproof/core/time_budget.h"
-#include "linkproof/proof/lift.h"
-#include "linkproof/symbolic/tape.h"
+#include "core/symbolic_scalar.h"
+#include "core/time_budget.h"
+#include "proof/lift.h"
+#include "symbolic/tape.h"
 #include "rational_normal.h"
 #include "symbolic_polygon.h"
 

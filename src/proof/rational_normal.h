@@ -21,7 +21,7 @@
 
 #include <unordered_map>
 
-#include "linkproof/core/modular_point.h"
+#include "core/modular_point.h"
 
 namespace linkproof::proof_detail {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/atomic_file.h"
+#include "report/atomic_file.h"
 
 #include <unistd.h>
 

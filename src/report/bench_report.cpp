@@ -1,13 +1,13 @@
-#include "linkproof/report/bench_report.h"
+#include "report/bench_report.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "linkproof/core/error.h"
-#include "linkproof/report/atomic_file.h"
+#include "report/atomic_file.h"
 #include "svg_plot.h"
-#include "linkproof/report/json_report.h"
+#include "report/json_report.h"
 
 namespace linkproof {
 

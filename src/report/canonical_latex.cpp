@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "linkproof/symbolic/canonical_order.h"
+#include "symbolic/canonical_order.h"
 
 namespace linkproof::report {
 

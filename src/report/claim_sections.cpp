@@ -3,8 +3,8 @@
 
 #include <map>
 
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/report/polygon_document.h"
+#include "report/comparison_text.h"
+#include "report/polygon_document.h"
 
 namespace linkproof::report {
 

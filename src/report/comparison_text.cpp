@@ -1,10 +1,11 @@
-#include "linkproof/report/comparison_text.h"
+#include "report/comparison_text.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "linkproof/report/number_text.h"
+#include "report/number_text.h"
+#include "check/scalar_dispatch.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/count_report.h"
+#include "report/count_report.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>

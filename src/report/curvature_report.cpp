@@ -1,10 +1,10 @@
-#include "linkproof/report/curvature_report.h"
+#include "report/curvature_report.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/mechanism_report.h"
+#include "report/json_report.h"
+#include "report/mechanism_report.h"
 
 namespace linkproof {
 

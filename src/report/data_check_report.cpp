@@ -1,9 +1,9 @@
-#include "linkproof/report/data_check_report.h"
+#include "report/data_check_report.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "linkproof/core/decimal.h"
+#include "linkproof/core/exact.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/document.h"
+#include "report/document.h"
 
 namespace linkproof::report {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/drawing.h"
+#include "report/drawing.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 #include "svg_plot.h"
 
 namespace linkproof::report {

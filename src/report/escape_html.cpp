@@ -1,5 +1,5 @@
 // HTML and SVG escaping (report/escape.h): the one function for text and attributes of both.
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 
 namespace linkproof::report {
 

@@ -3,7 +3,7 @@
 #include <string_view>
 #include <utility>
 
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 
 namespace linkproof::report {
 

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <string_view>
 
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 
 namespace linkproof::report {
 

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstdint>
 
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 
 namespace linkproof::report {
 

@@ -1,9 +1,9 @@
-#include "linkproof/report/json_report.h"
+#include "report/json_report.h"
 
 #include <fmt/format.h>
 
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/report/number_text.h"
+#include "report/comparison_text.h"
+#include "report/number_text.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/mechanism_document.h"
+#include "report/mechanism_document.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
-#include "linkproof/mechanism/fourbar_polygon.h"
-#include "linkproof/report/number_text.h"
-#include "linkproof/report/polygon_document.h"
+#include "mechanism/fourbar_polygon.h"
+#include "report/number_text.h"
+#include "report/polygon_document.h"
 #include "svg_plot.h"
 
 namespace linkproof::report {

@@ -1,12 +1,12 @@
-#include "linkproof/report/mechanism_report.h"
+#include "report/mechanism_report.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <fmt/ostream.h>
 
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/number_text.h"
+#include "report/comparison_text.h"
+#include "report/json_report.h"
+#include "report/number_text.h"
 
 namespace linkproof {
 

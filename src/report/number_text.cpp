@@ -1,9 +1,9 @@
-#include "linkproof/report/number_text.h"
+#include "report/number_text.h"
 
 #include <fmt/format.h>
 
-#include "linkproof/core/multiprecision.h"
-#include "linkproof/core/scalar.h"
+#include "core/multiprecision.h"
+#include "core/scalar.h"
 
 namespace linkproof {
 

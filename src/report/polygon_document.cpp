@@ -1,4 +1,4 @@
-#include "linkproof/report/polygon_document.h"
+#include "report/polygon_document.h"
 
 #include <fmt/format.h>
 #include <ginac/ginac.h>
@@ -7,10 +7,11 @@
 #include <chrono>
 #include <sstream>
 
-#include "linkproof/geometry/construction.h"
-#include "linkproof/report/number_text.h"
+#include "geometry/construction.h"
+#include "report/number_text.h"
 #include "canonical_latex.h"
 #include "svg_plot.h"
+#include "check/check_polygon.h"
 
 namespace linkproof::report {
 

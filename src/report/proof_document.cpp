@@ -1,11 +1,11 @@
-#include "linkproof/report/proof_document.h"
+#include "report/proof_document.h"
 
 #include <fmt/format.h>
 
 #include <map>
 
-#include "linkproof/report/polygon_document.h"
-#include "linkproof/report/prove_report.h"
+#include "report/polygon_document.h"
+#include "report/prove_report.h"
 
 namespace linkproof::report {
 

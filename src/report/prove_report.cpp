@@ -1,10 +1,10 @@
-#include "linkproof/report/prove_report.h"
+#include "report/prove_report.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/report/json_report.h"
+#include "report/comparison_text.h"
+#include "report/json_report.h"
 
 namespace linkproof {
 

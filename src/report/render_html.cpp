@@ -4,7 +4,7 @@
 #include <regex>
 #include <sstream>
 
-#include "linkproof/report/render.h"
+#include "report/render.h"
 
 namespace linkproof::report {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/render.h"
+#include "report/render.h"
 
 namespace linkproof::report {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/scene_placement_report.h"
+#include "report/scene_placement_report.h"
 
 #include <cln/integer.h>
 #include <cln/rational.h>

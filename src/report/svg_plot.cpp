@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/report/sweep_lines.h"
+#include "report/sweep_lines.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "linkproof/core/error.h"
-#include "linkproof/report/json_report.h"
+#include "report/json_report.h"
 
 namespace linkproof {
 

@@ -1,13 +1,13 @@
-#include "linkproof/report/text_report.h"
+#include "report/text_report.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
-#include "linkproof/io/sweep_scene.h"
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/number_text.h"
+#include "io/sweep_scene.h"
+#include "report/comparison_text.h"
+#include "report/json_report.h"
+#include "report/number_text.h"
 
 namespace linkproof {
 

@@ -1,11 +1,11 @@
-#include "linkproof/symbolic/canonical_form.h"
+#include "symbolic/canonical_form.h"
 
 #include <algorithm>
 #include <sstream>
 
 #include "ex_text.h"
 #include "linkproof/core/error.h"
-#include "linkproof/symbolic/canonical_order.h"
+#include "symbolic/canonical_order.h"
 #include "structure_hash.h"
 
 namespace linkproof {

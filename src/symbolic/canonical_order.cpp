@@ -1,4 +1,4 @@
-#include "linkproof/symbolic/canonical_order.h"
+#include "symbolic/canonical_order.h"
 
 #include <algorithm>
 #include <functional>

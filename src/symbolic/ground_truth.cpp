@@ -1,4 +1,8 @@
-#include "linkproof/symbolic/ground_truth.h"
+#include "symbolic/ground_truth.h"
+
+#include <string>
+
+#include "linkproof/core/error.h"
 
 namespace linkproof {
 
@@ -60,6 +64,21 @@ const Tape& GroundTruthEngine::coefficient_tape(int n) {
     d.coefficients = std::make_unique<Tape>(outputs, d.inputs, kDenominator);
   }
   return *d.coefficients;
+}
+
+PolygonMotion<Rational> exact_polygon_motion(const Polygon<Rational>& polygon, const InputRates<Rational>& rates) {
+  const std::string problem = polygon_input_problem(polygon);
+  if (!problem.empty()) throw InputError("exact_polygon_motion", "polygon", problem);
+  const auto inputs = static_cast<size_t>(polygon.n() - 3);
+  if (rates.omega.size() != inputs || rates.omega_dot.size() != inputs)
+    throw InputError("exact_polygon_motion", "rates",
+                     "a polygon of " + std::to_string(polygon.n()) + " sides needs " + std::to_string(inputs) +
+                         " omega and omega-dot values (one per input side 1..n-3)");
+  if (cln::zerop(polygon.dead_centre_determinant()))
+    throw InputError("exact_polygon_motion", "polygon",
+                     "dead centre: D = r_{n-2} x r_{n-1} = 0, the velocity system is singular and no motion exists");
+  static thread_local GroundTruthEngine engine;  // caches each n's derivation
+  return engine.motion(polygon, rates);
 }
 
 }  // namespace linkproof

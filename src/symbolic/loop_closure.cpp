@@ -1,7 +1,7 @@
-#include "linkproof/symbolic/loop_closure.h"
+#include "symbolic/loop_closure.h"
 
 #include "linkproof/core/error.h"
-#include "linkproof/symbolic/time_derivative.h"
+#include "symbolic/time_derivative.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/symbolic/polygon_symbols.h"
+#include "symbolic/polygon_symbols.h"
 
 #include <string>
 

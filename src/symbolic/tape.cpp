@@ -1,4 +1,4 @@
-#include "linkproof/symbolic/tape.h"
+#include "symbolic/tape.h"
 
 #include <map>
 #include <optional>
@@ -6,7 +6,7 @@
 #include <unordered_map>
 
 #include "linkproof/core/error.h"
-#include "linkproof/symbolic/canonical_form.h"
+#include "symbolic/canonical_form.h"
 
 namespace linkproof {
 

@@ -1,4 +1,4 @@
-#include "linkproof/symbolic/time_derivative.h"
+#include "symbolic/time_derivative.h"
 
 #include "linkproof/core/error.h"
 #include "ex_text.h"

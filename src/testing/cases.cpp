@@ -9,9 +9,9 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/core/scalar.h"
-#include "linkproof/mechanism/mechanism_solve.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "core/scalar.h"
+#include "mechanism/mechanism_solve.h"
+#include "mechanism/mechanism_vector_route.h"
 
 namespace linkproof::testing {
 

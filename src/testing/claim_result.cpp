@@ -4,9 +4,9 @@
 #include <fmt/ranges.h>
 
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
+#include "check/check_polygon.h"
 #include "linkproof/core/verdict.h"
-#include "linkproof/report/comparison_text.h"
+#include "report/comparison_text.h"
 #include "mechanism_catalogues.h"
 
 namespace linkproof::testing {

@@ -6,7 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "linkproof/core/scalar.h"
+#include "linkproof/core/exact.h"
+#include "core/scalar.h"
 
 namespace linkproof::testing {
 

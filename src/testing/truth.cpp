@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include "linkproof/core/scalar.h"
-#include "linkproof/core/tracked.h"
-#include "linkproof/mechanism/mechanism_solve.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "core/scalar.h"
+#include "core/tracked.h"
+#include "mechanism/mechanism_solve.h"
+#include "mechanism/mechanism_vector_route.h"
 
 namespace linkproof::testing {
 

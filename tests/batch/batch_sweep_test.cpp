@@ -6,7 +6,7 @@
 
 #include "batch/sweep_files.h"
 #include "dijksman1966.h"
-#include "linkproof/report/json_report.h"
+#include "report/json_report.h"
 
 namespace linkproof {
 namespace {

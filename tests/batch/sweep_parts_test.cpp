@@ -6,11 +6,11 @@
 
 #include "batch/sweep_files.h"
 #include "dijksman1966.h"
-#include "linkproof/batch/batch_sweep.h"
-#include "linkproof/batch/merge.h"
-#include "linkproof/batch/progress_bar.h"
-#include "linkproof/batch/worker_pool.h"
-#include "linkproof/report/json_report.h"
+#include "batch/batch_sweep.h"
+#include "batch/merge.h"
+#include "batch/progress_bar.h"
+#include "batch/worker_pool.h"
+#include "report/json_report.h"
 
 namespace linkproof {
 namespace {

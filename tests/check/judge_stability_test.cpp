@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/numerics/extreme_families.h"
+#include "check/check_polygon.h"
+#include "report/comparison_text.h"
+#include "numerics/extreme_families.h"
 
 namespace linkproof {
 namespace {

@@ -1,7 +1,7 @@
 // Random polygons: deterministic in (seed, n, index), valid, and available up to the sweep's n.
 #include <gtest/gtest.h>
 
-#include "linkproof/check/random_polygon.h"
+#include "check/random_polygon.h"
 
 namespace linkproof {
 namespace {

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/io/claim_file.h"
+#include "check/check_polygon.h"
+#include "report/comparison_text.h"
+#include "io/claim_file.h"
 #include "support/polygons.h"
 
 namespace linkproof {

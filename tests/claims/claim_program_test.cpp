@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "linkproof/check/check.h"
-#include "linkproof/claims/claim_program.h"
-#include "linkproof/io/claim_file.h"
+#include "check/check_polygon.h"
+#include "claims/claim_program.h"
+#include "io/claim_file.h"
 #include "support/polygons.h"
 
 namespace linkproof {

@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include "linkproof/claims/pair_sum.h"
-#include "linkproof/core/tracked.h"
+#include "claims/pair_sum.h"
+#include "core/tracked.h"
 
 namespace linkproof {
 namespace {

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "linkproof/claims/rate_poly.h"
+#include "claims/rate_poly.h"
 #include "linkproof/core/error.h"
 
 namespace linkproof {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "linkproof/claims/rate_poly.h"
-#include "linkproof/claims/rate_value.h"
-#include "linkproof/core/tracked.h"
+#include "claims/rate_poly.h"
+#include "claims/rate_value.h"
+#include "core/tracked.h"
 
 namespace linkproof {
 namespace {

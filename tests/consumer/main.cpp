@@ -3,13 +3,12 @@
 // Exit code 0 iff it matches.
 #include <iostream>
 
-#include "linkproof/symbolic/ground_truth.h"
+#include "linkproof/geometry/polygon.h"
 
 int main() {
   linkproof::Polygon<linkproof::Rational> p({{0, 0}, {1, 4}, {5, 5}, {7, 1}, {3, -2}});
   linkproof::InputRates<linkproof::Rational> in{{2, -1}, {1, 3}};
-  linkproof::GroundTruthEngine engine;
-  const auto m = engine.motion(p, in);
+  const auto m = linkproof::exact_polygon_motion(p, in);
 
   const linkproof::Rational expected = linkproof::Rational(3755) / 1331;
   const linkproof::Rational& got = m.omega_dot[3];

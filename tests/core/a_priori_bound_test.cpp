@@ -1,9 +1,9 @@
-#include "linkproof/core/a_priori_bound.h"
+#include "core/a_priori_bound.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "linkproof/core/scalar.h"
+#include "core/scalar.h"
 
 namespace linkproof {
 namespace {

@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "linkproof/core/exact.h"
-#include "linkproof/core/decimal.h"
 
 namespace linkproof {
 namespace {

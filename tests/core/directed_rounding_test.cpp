@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "linkproof/core/directed_rounding.h"
-#include "linkproof/core/scalar.h"
+#include "core/directed_rounding.h"
+#include "core/scalar.h"
 
 namespace linkproof {
 namespace {

@@ -1,10 +1,10 @@
 // ModularPoint: a one-sided zero test. It may say "non-zero" only for expressions that are not
 // identically zero; identically zero ones (however they are built) must never be rejected.
-#include "linkproof/core/modular_point.h"
+#include "core/modular_point.h"
 
 #include <gtest/gtest.h>
 
-#include "linkproof/core/symbolic_scalar.h"
+#include "core/symbolic_scalar.h"
 
 namespace linkproof {
 namespace {

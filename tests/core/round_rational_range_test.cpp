@@ -8,7 +8,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "linkproof/core/scalar.h"
+#include "core/scalar.h"
 
 namespace linkproof {
 namespace {

@@ -1,11 +1,11 @@
 // RowEchelon: exact rank, consistency and solution, against a dense reference elimination.
-#include "linkproof/core/row_echelon.h"
+#include "core/row_echelon.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "linkproof/check/random_polygon.h"
+#include "check/random_polygon.h"
 
 namespace linkproof {
 namespace {

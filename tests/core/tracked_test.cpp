@@ -7,11 +7,11 @@
 
 #include <random>
 
-#include "linkproof/claims/polygon_context.h"
-#include "linkproof/core/multiprecision.h"
-#include "linkproof/core/scalar.h"
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/geometry/closed_forms.h"
+#include "claims/polygon_context.h"
+#include "core/multiprecision.h"
+#include "core/scalar.h"
+#include "check/random_polygon.h"
+#include "geometry/closed_forms.h"
 #include "linkproof/io/scene.h"
 
 namespace linkproof {

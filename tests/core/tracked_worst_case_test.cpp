@@ -13,7 +13,7 @@
 #include <random>
 #include <string>
 
-#include "linkproof/core/scalar.h"
+#include "core/scalar.h"
 
 namespace linkproof {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cln/integer.h>
 
-#include "linkproof/core/multiprecision.h"
+#include "core/multiprecision.h"
 #include "linkproof/core/wide_bound.h"
 
 namespace linkproof {

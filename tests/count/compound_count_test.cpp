@@ -1,6 +1,6 @@
 // The eight-bar of Fig. 5 (conventions §A7, §A8): ranks 21 -> 22 -> 28, exact omega and omega-dot, and
 // the same answers from other loops and other fixed sides (an independent route).
-#include "linkproof/count/compound_count.h"
+#include "count/compound_count.h"
 
 #include <gtest/gtest.h>
 

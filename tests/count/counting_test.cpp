@@ -1,14 +1,14 @@
 // Exact ranks of the rate relations (conventions §A7): triangle relations for n = 3..60, the rank-2
 // families over all choices of the fixed side, and must-fail cases.
-#include "linkproof/count/counting.h"
+#include "count/counting.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
-#include "linkproof/count/count_claim.h"
-#include "linkproof/check/random_polygon.h"
+#include "count/count_claim.h"
+#include "check/random_polygon.h"
 #include "support/polygons.h"
 
 namespace linkproof {

@@ -3,8 +3,8 @@
 // relation afresh, whatever order the n come in.
 #include <gtest/gtest.h>
 
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/count/counting.h"
+#include "check/random_polygon.h"
+#include "count/counting.h"
 
 namespace linkproof {
 namespace {

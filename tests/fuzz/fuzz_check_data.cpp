@@ -10,8 +10,8 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/io/motion_data.h"
-#include "linkproof/numerics/data_check.h"
+#include "io/motion_data.h"
+#include "numerics/data_check.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <string>
 
-#include "linkproof/claims/claim_expression.h"
+#include "claims/claim_expression.h"
 #include "linkproof/core/error.h"
-#include "linkproof/io/claim_file.h"
+#include "io/claim_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -23,10 +23,10 @@
 #include <vector>
 
 #include "../report/report_checks.h"
-#include "linkproof/report/document.h"
-#include "linkproof/report/escape.h"
-#include "linkproof/report/mechanism_document.h"
-#include "linkproof/report/render.h"
+#include "report/document.h"
+#include "report/escape.h"
+#include "report/mechanism_document.h"
+#include "report/render.h"
 
 namespace {
 

@@ -1,8 +1,8 @@
 // Known answers of conventions §A8: every intermediate quantity of the construction.
 #include <gtest/gtest.h>
 
-#include "linkproof/geometry/closed_forms.h"
-#include "linkproof/geometry/construction.h"
+#include "geometry/closed_forms.h"
+#include "geometry/construction.h"
 #include "support/polygons.h"
 
 namespace linkproof {

@@ -15,7 +15,7 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/io/motion_data.h"
+#include "io/motion_data.h"
 
 namespace linkproof {
 namespace {

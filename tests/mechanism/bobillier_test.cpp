@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "linkproof/mechanism/curvature_analysis.h"
+#include "mechanism/curvature_analysis.h"
 #include "mechanism/curvature_support.h"
 
 namespace linkproof {

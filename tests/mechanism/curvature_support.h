@@ -3,8 +3,8 @@
 
 #include <rapidcheck.h>
 
-#include "linkproof/mechanism/joint_joining.h"
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/joint_joining.h"
+#include "mechanism/mechanism_catalogue.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof::testing {

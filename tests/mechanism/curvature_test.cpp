@@ -2,9 +2,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "linkproof/mechanism/curvature_analysis.h"
+#include "mechanism/curvature_analysis.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/curvature_support.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 namespace {

@@ -6,9 +6,10 @@
 #include <random>
 
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/dijksman_compound.h"
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "mechanism/dijksman_compound.h"
+#include "mechanism/mechanism_vector_route.h"
 #include "mechanism/mechanism_test_support.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 namespace {

@@ -16,7 +16,7 @@
 #include <cln/real.h>
 
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 namespace {

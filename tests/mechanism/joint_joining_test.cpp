@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "linkproof/mechanism/curvature_analysis.h"
+#include "mechanism/curvature_analysis.h"
 #include "mechanism/curvature_support.h"
 
 namespace linkproof {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "mechanism_catalogues.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 namespace {

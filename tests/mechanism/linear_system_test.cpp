@@ -1,6 +1,6 @@
 // solve_linear_system: the exact (sparse) route gives the rank, consistency and solution of a
 // dense reference elimination, on square, rectangular and rank-deficient systems.
-#include "linkproof/mechanism/linear_system.h"
+#include "mechanism/linear_system.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The mechanism engine: symbolic loop closure (GiNaC) and rigid-body vector route, exact.
 #include <gtest/gtest.h>
 
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "mechanism/mechanism_vector_route.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_closure.h"
-#include "linkproof/mechanism/mechanism_solve.h"
+#include "mechanism/mechanism_closure.h"
+#include "mechanism/mechanism_solve.h"
 
 namespace linkproof {
 namespace {

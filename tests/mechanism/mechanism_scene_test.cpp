@@ -9,7 +9,7 @@
 
 #include "support/cli_run.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof {

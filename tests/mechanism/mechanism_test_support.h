@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::testing {
 

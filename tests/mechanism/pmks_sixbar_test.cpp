@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 #include "mechanism/mechanism_test_support.h"
 
 namespace linkproof {

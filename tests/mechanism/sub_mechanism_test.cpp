@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/mechanism/mechanism_check.h"
-#include "linkproof/mechanism/sub_mechanism.h"
+#include "report/comparison_text.h"
+#include "mechanism/mechanism_catalogue.h"
+#include "mechanism/sub_mechanism.h"
 #include "mechanism_test_support.h"
 
 namespace linkproof {

@@ -1,4 +1,4 @@
-#include "linkproof/numerics/adaptive.h"
+#include "numerics/adaptive.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "linkproof/numerics/extreme_families.h"
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/geometry/closed_forms.h"
+#include "numerics/extreme_families.h"
+#include "check/random_polygon.h"
+#include "geometry/closed_forms.h"
 
 namespace linkproof {
 namespace {

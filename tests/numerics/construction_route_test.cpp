@@ -11,11 +11,11 @@
 #include <optional>
 #include <string>
 
-#include "linkproof/core/multiprecision.h"
-#include "linkproof/numerics/extreme_families.h"
-#include "linkproof/numerics/ladder.h"
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/numerics/routes.h"
+#include "core/multiprecision.h"
+#include "numerics/extreme_families.h"
+#include "numerics/ladder.h"
+#include "check/random_polygon.h"
+#include "numerics/routes.h"
 #include "linkproof/io/scene.h"
 
 namespace linkproof {

@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "linkproof/io/mechanism_scene.h"
-#include "linkproof/core/decimal.h"
-#include "linkproof/io/motion_data.h"
-#include "linkproof/numerics/data_check.h"
+#include "linkproof/core/exact.h"
+#include "io/motion_data.h"
+#include "numerics/data_check.h"
 
 namespace linkproof {
 namespace {

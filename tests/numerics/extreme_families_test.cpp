@@ -1,9 +1,9 @@
-#include "linkproof/numerics/extreme_families.h"
+#include "numerics/extreme_families.h"
 
 #include <gtest/gtest.h>
 
-#include "linkproof/numerics/routes.h"
-#include "linkproof/numerics/stability.h"
+#include "numerics/routes.h"
+#include "numerics/stability.h"
 
 namespace linkproof {
 namespace {

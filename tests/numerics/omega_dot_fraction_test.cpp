@@ -1,9 +1,9 @@
-#include "linkproof/numerics/omega_dot_fraction.h"
+#include "numerics/omega_dot_fraction.h"
 
 #include <gtest/gtest.h>
 
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/numerics/routes.h"
+#include "check/random_polygon.h"
+#include "numerics/routes.h"
 
 namespace linkproof {
 namespace {

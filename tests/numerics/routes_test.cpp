@@ -1,12 +1,12 @@
 // The four routes of numerics/routes.h over every arithmetic of the ladder: one typed test per
 // arithmetic, the same algorithm for every type.
-#include "linkproof/numerics/routes.h"
+#include "numerics/routes.h"
 
 #include <gtest/gtest.h>
 
-#include "linkproof/numerics/error_measure.h"
-#include "linkproof/numerics/ladder.h"
-#include "linkproof/check/random_polygon.h"
+#include "numerics/error_measure.h"
+#include "numerics/ladder.h"
+#include "check/random_polygon.h"
 #include "support/polygons.h"
 
 namespace linkproof {

@@ -1,11 +1,11 @@
-#include "linkproof/numerics/stability.h"
+#include "numerics/stability.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "linkproof/numerics/extreme_families.h"
-#include "linkproof/check/random_polygon.h"
+#include "numerics/extreme_families.h"
+#include "check/random_polygon.h"
 
 namespace linkproof {
 namespace {

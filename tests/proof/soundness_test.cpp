@@ -2,9 +2,9 @@
 // finding of the review, reproduced; each failed before the fix.
 #include <gtest/gtest.h>
 
-#include "linkproof/io/claim_file.h"
-#include "linkproof/proof/lift.h"
-#include "linkproof/proof/prove.h"
+#include "io/claim_file.h"
+#include "proof/lift.h"
+#include "proof/prove.h"
 
 namespace linkproof {
 namespace {

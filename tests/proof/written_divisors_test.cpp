@@ -9,11 +9,11 @@
 
 #include <cln/rational.h>
 
-#include "linkproof/check/check.h"
+#include "check/check_polygon.h"
 #include "linkproof/core/error.h"
-#include "linkproof/io/claim_file.h"
-#include "linkproof/proof/counterexample.h"
-#include "linkproof/proof/prove.h"
+#include "io/claim_file.h"
+#include "proof/counterexample.h"
+#include "proof/prove.h"
 
 namespace linkproof {
 namespace {

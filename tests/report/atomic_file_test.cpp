@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "linkproof/core/error.h"
-#include "linkproof/report/atomic_file.h"
+#include "report/atomic_file.h"
 
 namespace linkproof {
 namespace {

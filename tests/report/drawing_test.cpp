@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "linkproof/report/drawing.h"
+#include "report/drawing.h"
 
 namespace linkproof::report {
 namespace {

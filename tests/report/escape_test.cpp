@@ -1,6 +1,6 @@
 // report/escape.h: the one escaping function per output language, on plain names (kept as they
 // are, so bundled reports do not change) and on any string (properties).
-#include "linkproof/report/escape.h"
+#include "report/escape.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>

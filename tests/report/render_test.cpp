@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "linkproof/report/render.h"
+#include "report/render.h"
 #include "report/report_checks.h"
 
 namespace linkproof::report {

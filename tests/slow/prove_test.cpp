@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "dijksman1966.h"
-#include "linkproof/proof/prove.h"
+#include "proof/prove.h"
 
 namespace linkproof {
 namespace {

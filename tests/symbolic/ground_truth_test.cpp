@@ -2,9 +2,9 @@
 // and as a rational-function identity in generic symbols.
 #include <gtest/gtest.h>
 
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/geometry/closed_forms.h"
-#include "linkproof/symbolic/ground_truth.h"
+#include "check/random_polygon.h"
+#include "geometry/closed_forms.h"
+#include "symbolic/ground_truth.h"
 #include "support/polygons.h"
 
 namespace linkproof {

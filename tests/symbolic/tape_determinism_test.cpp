@@ -17,11 +17,11 @@
 #include <sstream>
 #include <string>
 
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/symbolic/canonical_form.h"
-#include "linkproof/symbolic/canonical_order.h"
-#include "linkproof/symbolic/ground_truth.h"
-#include "linkproof/symbolic/tape.h"
+#include "check/random_polygon.h"
+#include "symbolic/canonical_form.h"
+#include "symbolic/canonical_order.h"
+#include "symbolic/ground_truth.h"
+#include "symbolic/tape.h"
 #include "support/cli_run.h"
 
 namespace linkproof {

@@ -2,7 +2,7 @@
 // families assemble and solve exactly (conventions §A8 known answers).
 #include <gtest/gtest.h>
 
-#include "linkproof/symbolic/ground_truth.h"
+#include "symbolic/ground_truth.h"
 #include "linkproof/testing/cases.h"
 #include "linkproof/testing/truth.h"
 

@@ -7,8 +7,9 @@
 #include <functional>
 #include <sstream>
 
-#include "linkproof/geometry/construction.h"
+#include "geometry/construction.h"
 #include "linkproof/testing/generators.h"
+#include "linkproof/core/exact.h"
 #include "linkproof/testing/truth.h"
 
 namespace linkproof::testing {

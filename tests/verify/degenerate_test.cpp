@@ -19,13 +19,14 @@
 #include <vector>
 
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/report/number_text.h"
-#include "linkproof/geometry/closed_forms.h"
-#include "linkproof/geometry/construction.h"
+#include "check/check_polygon.h"
+#include "report/comparison_text.h"
+#include "report/number_text.h"
+#include "geometry/closed_forms.h"
+#include "geometry/construction.h"
 #include "linkproof/io/scene.h"
-#include "linkproof/symbolic/ground_truth.h"
+#include "symbolic/ground_truth.h"
+#include "geometry/zero_vector.h"
 
 namespace linkproof {
 namespace {

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "dijksman1966.h"
-#include "linkproof/check/check.h"
-#include "linkproof/report/comparison_text.h"
-#include "linkproof/check/random_polygon.h"
-#include "linkproof/io/claim_file.h"
+#include "check/check_polygon.h"
+#include "report/comparison_text.h"
+#include "check/random_polygon.h"
+#include "io/claim_file.h"
 #include "linkproof/io/scene.h"
 #include "support/polygons.h"
 

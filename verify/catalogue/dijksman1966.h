@@ -11,8 +11,8 @@
 
 #include <vector>
 
-#include "linkproof/claims/claim.h"
-#include "linkproof/io/claim_file.h"
+#include "claims/claim.h"
+#include "io/claim_file.h"
 
 namespace linkproof::dijksman1966 {
 

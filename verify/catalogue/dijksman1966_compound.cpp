@@ -2,8 +2,9 @@
 // compared with the mechanism engine, and the rank count.
 #include <fmt/format.h>
 
-#include "linkproof/mechanism/dijksman_compound.h"
+#include "mechanism/dijksman_compound.h"
 #include "mechanism_catalogues.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::catalogues {
 

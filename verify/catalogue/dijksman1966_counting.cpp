@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "linkproof/core/error.h"
-#include "linkproof/check/random_polygon.h"
+#include "check/random_polygon.h"
 
 namespace linkproof::dijksman1966 {
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "linkproof/count/compound_count.h"
-#include "linkproof/count/count_claim.h"
+#include "count/compound_count.h"
+#include "count/count_claim.h"
 
 namespace linkproof::dijksman1966 {
 

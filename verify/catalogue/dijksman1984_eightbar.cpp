@@ -6,9 +6,10 @@
 // mechanism/curvature_analysis.h; this file holds only what names the paper's links.
 #include <fmt/format.h>
 
-#include "linkproof/mechanism/curvature.h"
-#include "linkproof/mechanism/joint_joining.h"
+#include "mechanism/curvature.h"
+#include "mechanism/joint_joining.h"
 #include "mechanism_catalogues.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::catalogues {
 

@@ -1,8 +1,9 @@
 // The acceleration-polygon course notes (conventions §B): the acceleration polygon of a four-bar, and its errata.
 #include <fmt/format.h>
 
-#include "linkproof/mechanism/fourbar_polygon.h"
+#include "mechanism/fourbar_polygon.h"
 #include "mechanism_catalogues.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::catalogues {
 

@@ -3,8 +3,9 @@
 // paper switches to), frame "0"; joint "A" is the crank pin.
 #include <fmt/format.h>
 
-#include "linkproof/mechanism/mechanism_vector_route.h"
+#include "mechanism/mechanism_vector_route.h"
 #include "mechanism_catalogues.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::catalogues {
 

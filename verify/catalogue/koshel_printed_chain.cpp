@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "mechanism_catalogues.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::catalogues {
 

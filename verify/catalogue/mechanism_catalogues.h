@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "linkproof/mechanism/mechanism_check.h"
+#include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::catalogues {
 

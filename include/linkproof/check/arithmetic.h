@@ -25,27 +25,4 @@ std::optional<Arithmetic> parse_arithmetic(std::string_view s);
 /// Every name, comma-separated, for help texts and error messages.
 std::string arithmetic_names();
 
-/// Calls f.template operator()<T>() with the scalar type of arithmetic a.
-template <class F>
-decltype(auto) with_scalar_type(Arithmetic a, F&& f);
-
-}  // namespace linkproof
-
-#include "linkproof/core/multiprecision.h"
-#include "linkproof/core/scalar.h"
-
-namespace linkproof {
-template <class F>
-decltype(auto) with_scalar_type(Arithmetic a, F&& f) {
-  switch (a) {
-    case Arithmetic::Double: return f.template operator()<Tracked<double>>();
-    case Arithmetic::LongDouble: return f.template operator()<Tracked<long double>>();
-    case Arithmetic::Mp30: return f.template operator()<Tracked<MpFloat<30>>>();
-    case Arithmetic::Mp50: return f.template operator()<Tracked<MpFloat<50>>>();
-    case Arithmetic::Mp100: return f.template operator()<Tracked<MpFloat<100>>>();
-    case Arithmetic::Mp1000: return f.template operator()<Tracked<MpFloat<1000>>>();
-    case Arithmetic::Exact: break;
-  }
-  return f.template operator()<Rational>();
-}
 }  // namespace linkproof

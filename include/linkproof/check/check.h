@@ -1,9 +1,5 @@
-// Checking a catalogue of claims on one polygon: the library's main entry point.
-//
-//   GroundTruthEngine engine;
-//   PolygonCheck r = check_polygon(engine, dijksman1966::catalogue(), "pentagon", polygon, rates,
-//                                  Arithmetic::Exact);
-//   r.claims[k].verdict, r.omega[j], ...
+// The result of checking claims on one polygon (`linkproof check` on a polygon scene): each
+// claim's outcome, the rates, the determinant of the velocity system.
 //
 // Results are values (core/result_number.h: exact rationals, or a float midpoint in its own
 // precision with its rigorous radius in the evidence); report/ makes their text.
@@ -11,13 +7,14 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linkproof/check/ask.h"
-#include "linkproof/claims/claim.h"
+#include "linkproof/claims/claim_info.h"
 #include "linkproof/core/error.h"
 #include "linkproof/check/arithmetic.h"
-#include "linkproof/check/judge.h"
+#include "linkproof/check/comparison.h"
 
 namespace linkproof {
 
@@ -42,11 +39,11 @@ struct ClaimOutcome {
   /// erratum reading that happens to hold here is not a failure. Error never is as expected.
   bool is_as_expected(bool strict = false) const;
   /// Verdict Undefined, naming the quantity that does not exist and why.
-  void mark_undefined(const UndefinedQuantity& u) {
+  void mark_undefined(std::string quantity, std::string reason) {
     verdict = Verdict::Undefined;
     headline.verdict = Verdict::Undefined;
-    headline.undefined_quantity = u.quantity();
-    headline.reason = u.reason();
+    headline.undefined_quantity = std::move(quantity);
+    headline.reason = std::move(reason);
   }
   /// A true claim that fails: the verifier's "no".
   bool is_unexpected_failure() const { return info.expected == Expectation::Holds && verdict == Verdict::Fails; }
@@ -76,21 +73,6 @@ struct PolygonCheck {
   /// --strict: undefined or inconclusive on a true claim is not as expected (exit 1).
   bool strict = false;
 };
-
-/// Evaluates every applicable claim of `catalogue` on the polygon in arithmetic `a`.
-/// Never throws for a valid polygon (see polygon_input_problem): a claim whose evaluation
-/// throws gets the verdict Error with the message. Cost O(n^2) operations in the arithmetic
-/// (the Theta(n^2) pair terms), plus the text of the evidence kept.
-/// With an `ask` that restricts (check/ask.h), only the asked rates are computed: an input
-/// side's or the fixed side's rate costs nothing, a solved side's (n-2, n-1) the engine's
-/// motion; the claims evaluated are `catalogue` as given (asked_claims chooses them).
-PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const std::string& scene,
-                           const Polygon<Rational>& polygon, const InputRates<Rational>& rates, Arithmetic a,
-                           Evidence evidence = Evidence::All, const std::optional<SceneAsk>& ask = std::nullopt);
-
-/// Runs one claim in scalar type T on a prepared context.
-template <class T>
-ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evidence evidence = Evidence::All);
 
 /// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
 /// claim's evaluation errored.

@@ -18,4 +18,11 @@ Rational parse_rational(std::string_view text);
 /// Reduced "p/q"; integers without "/1" (the JSON contract's spelling).
 std::string format_rational(const Rational& q);
 
+/// q as a decimal with `digits` significant digits, rounded to nearest (e.g.
+/// "-8.934593051317962575840725"; "1.00e-9" below 1e-5), or exactly when q is an integer.
+std::string format_decimal(const Rational& q, int digits = 25);
+
+/// The exact value of a finite double (a dyadic rational).
+Rational rational_from_double(double x);
+
 }  // namespace linkproof

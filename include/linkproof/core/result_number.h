@@ -10,10 +10,12 @@
 #include <variant>
 
 #include "linkproof/core/exact.h"
-#include "linkproof/core/tracked.h"
 #include "linkproof/core/wide_bound.h"
 
 namespace linkproof {
+
+template <class F>
+struct Tracked;  // midpoint-radius arithmetic (inside the library): {v, e} with |exact - v| <= e
 
 /// A number of a result: exact (Rational), or the midpoint of a floating-point value in its own
 /// type (double, long double, a CLN float of the multiprecision arithmetic's format).

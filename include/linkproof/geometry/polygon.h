@@ -55,6 +55,20 @@ struct InputRates {
   }
 };
 
+/// omega and omega-dot of every side relative to side n, 0-based (omega[j-1] = omega_{j,n};
+/// entry n-1 is side n itself, always 0).
+template <class T>
+struct PolygonMotion {
+  std::vector<T> omega, omega_dot;
+};
+
+/// The exact motion of a polygon: omega_{j,n} and omega-dot_{j,n} of every side j = 1..n, from
+/// the loop closure differentiated twice (linkproof's ground truth; the rates of the input sides
+/// are `rates`'). Throws InputError for a polygon that polygon_input_problem refuses, for rates
+/// of the wrong length, and at the dead centre D = r_{n-2} x r_{n-1} = 0 (no motion exists).
+/// GiNaC underneath: call it from one thread at a time.
+PolygonMotion<Rational> exact_polygon_motion(const Polygon<Rational>& polygon, const InputRates<Rational>& rates);
+
 /// Checks an exact polygon for what makes it unusable as input (n < 4, coincident joints,
 /// hence zero-length sides). Returns an empty string if valid, otherwise the problem, naming
 /// the joints by the paper's indices.

@@ -1,10 +1,15 @@
-// Plane vectors over any scalar type T (see core/scalar.h).
+// Plane vectors over any scalar type T (double, long double, exact Rational, ...).
 // Conventions (docs/conventions.md, Notation): a x b = a_x b_y - a_y b_x; J a = (-a_y, a_x) turns a by +90 degrees.
 #pragma once
 
-#include "linkproof/core/scalar.h"
+#include "linkproof/core/exact.h"
 
 namespace linkproof {
+
+/// The conversion of an exact value to scalar type T (defined with the scalar traits inside the
+/// library; instantiated there for double, long double and Rational).
+template <class T>
+T from_rational(const Rational& q);
 
 template <class T>
 struct Vec2 {
@@ -22,15 +27,6 @@ template <class T> T dot(const Vec2<T>& a, const Vec2<T>& b) { return a.x * b.x 
 template <class T> T norm2(const Vec2<T>& a) { return dot(a, a); }
 /// J a: a turned by +90 degrees (counter-clockwise).
 template <class T> Vec2<T> perp(const Vec2<T>& a) { return {-a.y, a.x}; }
-
-/// Both components zero. For symbolic coordinates one zero test of |a|^2 (zero over the reals
-/// iff a = 0), so that a proof records "these two points coincide", not "one coordinate is 0".
-template <class T> bool is_zero_vector(const Vec2<T>& a) {
-  if constexpr (requires { ScalarTraits<T>::is_symbolic; })
-    return linkproof::is_zero(a.x * a.x + a.y * a.y);
-  else
-    return linkproof::is_zero(a.x) && linkproof::is_zero(a.y);
-}
 
 /// Converts an exact vector to scalar type T.
 template <class T> Vec2<T> vec_from_rational(const Vec2<Rational>& a) {

@@ -2,7 +2,8 @@
 // per claim. The mechanism counterpart of check/check.h (polygons).
 //
 //   MechanismScene s = load_mechanism_scene("verify/scenes/mechanisms/fig5_eightbar.yaml");
-//   MechanismCheck r = check_mechanism(s, claims, Arithmetic::Exact);
+//   MechanismCheck r = check_mechanism(s, Arithmetic::Exact);
+//   r.omega[k], r.omega_dot[k], r.joints[j].v[0], r.claims[c].verdict, ...
 //
 // Truth: the symbolic loop closure (mechanism/mechanism_closure.h) solved exactly. Built-in
 // claims, run on every scene:
@@ -11,37 +12,22 @@
 //   mechanism.driver_inversion (mobility 1) taking any other moving link as the driver, with its
 //                              rates from the solution, gives the same motion (docs/conventions.md §C: the
 //                              results do not depend on which link drives).
-// Paper-specific claims come from catalogues (verify/catalogue), selected by the scene's
-// `catalogue` field. Claims are evaluated in exact arithmetic; --arith double solves the
+// Paper-specific claims come from catalogues (the program's own, selected by the scene's
+// `catalogue` field). Claims are evaluated in exact arithmetic; --arith double solves the
 // rigid-body route in IEEE double and reports the values with the system's condition number.
 #pragma once
 
-#include <functional>
-#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linkproof/check/arithmetic.h"
 #include "linkproof/check/check.h"
 #include "linkproof/core/result_number.h"
 #include "linkproof/mechanism/mechanism_scene.h"
-#include "linkproof/mechanism/mechanism_solve.h"
 
 namespace linkproof {
-
-/// What a mechanism claim may use: the scene and its exact solution.
-struct MechanismContext {
-  const MechanismScene& scene;
-  const MechanismSolution<Rational>& truth;
-};
-
-struct MechanismClaim {
-  ClaimInfo info;
-  std::function<ClaimSides<Rational>(const MechanismContext&)> evaluate;
-  /// Optional: false if the claim does not apply to this mechanism (listed as not applicable).
-  std::function<bool(const MechanismContext&)> applies;
-};
 
 /// A table of named quantities for reports (e.g. the vectors of an acceleration polygon).
 struct ReportTable {
@@ -49,13 +35,6 @@ struct ReportTable {
   std::vector<std::pair<std::string, std::string>> rows;
 };
 
-/// A named set of claims (one paper's), selectable by a scene's `catalogue` field, with the
-/// tables it adds to the report (may be empty).
-struct MechanismCatalogue {
-  std::string name;
-  std::vector<MechanismClaim> claims;
-  std::function<std::vector<ReportTable>(const MechanismContext&)> tables;
-};
 
 struct MechanismCheck {
   std::string scene;
@@ -104,28 +83,13 @@ struct MechanismCheck {
   bool strict = false;
 };
 
-/// The exact solution by the symbolic route (throws InputError for bad mobility/inputs).
-MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& scene);
-
-/// Solves and runs the built-in claims plus those of `catalogues` (the scene's); with a
-/// restricting `ask`, only what it asks (see MechanismCheck::ask). Throws InputError for a scene
-/// that cannot be solved (locked, wrong number of inputs, ...) or an ask naming an unknown claim.
-MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<MechanismCatalogue>& catalogues,
-                               Arithmetic a);
+/// Solves the scene and runs the built-in claims (in arithmetic `a`, as MechanismCheck describes).
+/// The paper catalogues of `linkproof check` are the program's, not the library's. Throws
+/// InputError for a scene that cannot be solved (locked, wrong number of inputs, ...).
+MechanismCheck check_mechanism(const MechanismScene& scene, Arithmetic a);
 
 /// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
 /// claim errored.
 int exit_status(const MechanismCheck& check);
-
-/// Runs one claim: its comparisons judged exactly; an UndefinedQuantity thrown by the claim
-/// gives `undefined`, any other exception `error`.
-ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx);
-/// Runs every claim that applies (appended to `outcomes`); the ids of the others are appended to
-/// `not_applicable`.
-void run_mechanism_claims(const std::vector<MechanismClaim>& claims, const MechanismContext& ctx,
-                          std::vector<ClaimOutcome>& outcomes, std::vector<std::string>& not_applicable);
-
-/// The built-in claims (routes_agree, driver_inversion).
-std::vector<MechanismClaim> builtin_mechanism_claims();
 
 }  // namespace linkproof

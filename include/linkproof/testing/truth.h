@@ -21,7 +21,6 @@
 #include <vector>
 
 #include "linkproof/core/exact.h"
-#include "linkproof/core/decimal.h"
 #include "linkproof/mechanism/mechanism_scene.h"
 
 namespace linkproof::testing {

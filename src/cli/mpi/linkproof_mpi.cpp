@@ -17,11 +17,11 @@
 #include <fmt/ostream.h>
 
 #include "dijksman1966.h"
-#include "linkproof/batch/batch_sweep.h"
-#include "linkproof/batch/merge.h"
-#include "linkproof/check/sweep_tally.h"
-#include "linkproof/report/json_report.h"
-#include "linkproof/report/text_report.h"
+#include "batch/batch_sweep.h"
+#include "batch/merge.h"
+#include "check/sweep_tally.h"
+#include "report/json_report.h"
+#include "report/text_report.h"
 #include "sweep_args.h"
 
 namespace linkproof::cli {

@@ -1,0 +1,61 @@
+// A sweep run as a batch job: worker processes, a streaming result file that survives
+// interruption, shards, replayable scenes of failing cases, a progress bar.
+//
+//   BatchSweepOptions o;  o.sweep = ...;  o.jobs = 4;  o.out = "sweep.jsonl";  o.resume = true;
+//   BatchSweepResult r = run_batch_sweep(dijksman1966::catalogue(), o);
+//
+// Whatever the number of jobs, the shard, or how often the run was interrupted and resumed,
+// the cases are folded in case order (check/sweep_tally.h), so the report and the result file
+// are the same bytes as those of one uninterrupted single-process run (the report's `seconds`
+// excepted: it is the time of this run). Result file format: report/sweep_lines.h.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "check/sweep.h"
+#include "report/sweep_lines.h"
+
+namespace linkproof {
+
+struct BatchSweepOptions {
+  SweepOptions sweep;
+  int jobs = 1;               ///< worker processes; 1 runs in this process
+  Shard shard;                ///< run only this shard's cases
+  std::string out;            ///< result file (JSON Lines); empty: none
+  bool resume = false;        ///< continue `out` from its last complete case
+  std::string scenes_dir;     ///< write each case with an unexpected outcome here as a scene
+  std::ostream* progress = nullptr;  ///< progress bar target (a terminal), or null
+};
+
+struct BatchSweepResult {
+  enum class Status { Complete, Interrupted, OutOfTime, WorkerFailed };
+  Status status = Status::Complete;
+  SweepReport report;      ///< of every case done, read back or computed
+  int signal = 0;          ///< Interrupted: the signal
+  std::string message;     ///< not Complete: what happened (how to continue is the caller's to say)
+  long cases_resumed = 0;  ///< cases read back from the result file
+  long cases_run = 0;      ///< cases computed by this run
+  bool already_complete = false;  ///< the result file already held the summary line
+
+  /// The CLI's exit code: the report's when complete; 128 + signal when interrupted; 2 when
+  /// stopped by the time budget (--max-seconds); 3 when a
+  /// worker failed.
+  int exit_status() const;
+};
+
+/// Runs (or continues) the sweep. InputError for a bad --out/--scenes path, or a result file that
+/// belongs to another sweep (different seed, n, count, arithmetic or shard), is corrupt or was
+/// edited (every line read back is checked: report/sweep_lines.h, check_case_identity); a
+/// ResultFileExists for a non-empty `out` without `resume`. std::bad_alloc when an allocation
+/// fails, in this process or in a worker (the result file keeps every completed case).
+BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const BatchSweepOptions& options);
+
+/// The cases of `shard` in case order.
+std::vector<long> shard_cases(const SweepOptions& o, const Shard& shard);
+
+/// Writes case c as a scene `<dir>/<name>.yaml` (io/sweep_scene.h); InputError on failure.
+void write_sweep_scene(const std::string& dir, const SweepCase& c);
+
+}  // namespace linkproof

@@ -1,0 +1,104 @@
+// Route 2 to a mechanism's kinematics: the rigid-body vector formulas, written directly, over any
+// scalar type T. Independent of the symbolic route (mechanism/mechanism_closure.h), which
+// differentiates the closure with GiNaC; the two must give the same A and h exactly.
+//
+// Loop closure on joint position vectors: a loop (mechanism/linkage.h) runs through links
+// l_0..l_{k-1}; inside l_i it goes from joint c_i to joint c_{i+1}, the vector r_i, fixed in l_i;
+// through a prismatic joint it adds +-sigma u (u fixed in the guide, sigma = 0 now). Hence
+//   sum_i r_i + sum_prismatic (+-) sigma u = 0,
+//   d/dt:     sum_i omega_{l_i} J r_i + sum (+-) sigma-dot u = 0
+//   d2/dt2:   sum_i (omega-dot_{l_i} J r_i - omega_{l_i}^2 r_i)
+//             + sum (+-) (sigma-ddot u + 2 omega_guide sigma-dot J u) = 0   (Coriolis, docs/conventions.md §C)
+// and per prismatic pair omega_slider - omega_guide = 0 (and its derivative).
+// No angles appear: with rational joints and rates every entry is rational.
+// Both builders take the joint positions from the linkage (exact, converted to T), or from
+// `at` when given (one per joint, already in T: e.g. Tracked values whose radius is the
+// uncertainty of recorded positions, cli check-data).
+#pragma once
+
+#include <vector>
+
+#include "core/scalar.h"
+#include "linkproof/mechanism/linkage.h"
+#include "mechanism/linear_system.h"
+
+namespace linkproof {
+
+/// The constraint matrix A (Linkage::constraint_count() x unknown_count()).
+/// The loop vector from joint `from` to joint `to`, exact or from `at` (see above).
+template <class T>
+Vec2<T> joint_difference(const Linkage& g, int from, int to, const std::vector<Vec2<T>>* at) {
+  if (at) return (*at)[static_cast<size_t>(to)] - (*at)[static_cast<size_t>(from)];
+  return vec_from_rational<T>(g.joint(to).at - g.joint(from).at);
+}
+
+template <class T>
+DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const std::vector<Vec2<T>>* at = nullptr) {
+  const size_t N = static_cast<size_t>(g.unknown_count());
+  DenseMatrix<T> A;
+  for (const LinkageLoop& loop : g.loops()) {
+    std::vector<T> rx(N, from_int<T>(0)), ry(N, from_int<T>(0));
+    const size_t k = loop.crossings.size();
+    for (size_t i = 0; i < k; ++i) {
+      const JointCrossing& c = loop.crossings[i];
+      const JointCrossing& next = loop.crossings[(i + 1) % k];
+      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, at);
+      if (const int col = g.unknown_of_link(c.to); col >= 0) {
+        rx[static_cast<size_t>(col)] = rx[static_cast<size_t>(col)] - r.y;  // J r = (-r_y, r_x)
+        ry[static_cast<size_t>(col)] = ry[static_cast<size_t>(col)] + r.x;
+      }
+      if (const int s = g.sliding_sign(c); s != 0) {
+        const Vec2<T> u = vec_from_rational<T>(g.joint(c.joint).axis);
+        const size_t col = static_cast<size_t>(g.unknown_of_joint(c.joint));
+        rx[col] = rx[col] + from_int<T>(s) * u.x;
+        ry[col] = ry[col] + from_int<T>(s) * u.y;
+      }
+    }
+    A.push_back(std::move(rx));
+    A.push_back(std::move(ry));
+  }
+  for (const LinkageJoint& j : g.joints()) {
+    if (j.type != JointType::Prismatic) continue;
+    std::vector<T> row(N, from_int<T>(0));
+    if (const int c = g.unknown_of_link(j.links[1]); c >= 0) row[static_cast<size_t>(c)] = from_int<T>(1);
+    if (const int c = g.unknown_of_link(j.links[0]); c >= 0) row[static_cast<size_t>(c)] = from_int<T>(-1);
+    A.push_back(std::move(row));
+  }
+  return A;
+}
+
+/// h(q-dot): the acceleration system's right-hand side (everything without omega-dot or
+/// sigma-ddot, moved to the right). `coriolis = false` drops the Coriolis terms: a deliberately
+/// wrong variant, for the claim that they are needed (docs/conventions.md §C).
+template <class T>
+std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot, bool coriolis = true,
+                                          const std::vector<Vec2<T>>* at = nullptr) {
+  const auto omega = [&](int link) {
+    const int c = g.unknown_of_link(link);
+    return c < 0 ? from_int<T>(0) : qdot[static_cast<size_t>(c)];
+  };
+  std::vector<T> h;
+  for (const LinkageLoop& loop : g.loops()) {
+    Vec2<T> acc{from_int<T>(0), from_int<T>(0)};
+    const size_t k = loop.crossings.size();
+    for (size_t i = 0; i < k; ++i) {
+      const JointCrossing& c = loop.crossings[i];
+      const JointCrossing& next = loop.crossings[(i + 1) % k];
+      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, at);
+      const T w = omega(c.to);
+      acc = acc + (w * w) * r;
+      if (const int s = g.sliding_sign(c); s != 0 && coriolis) {
+        const LinkageJoint& j = g.joint(c.joint);
+        const T sd = qdot[static_cast<size_t>(g.unknown_of_joint(c.joint))];
+        acc = acc - (from_int<T>(2 * s) * omega(j.links[0]) * sd) * perp(vec_from_rational<T>(j.axis));
+      }
+    }
+    h.push_back(acc.x);
+    h.push_back(acc.y);
+  }
+  for (const LinkageJoint& j : g.joints())
+    if (j.type == JointType::Prismatic) h.push_back(from_int<T>(0));
+  return h;
+}
+
+}  // namespace linkproof

@@ -1,0 +1,40 @@
+// Reports of a mechanism check (mechanism/mechanism_check.h): JSON and text.
+//
+// JSON contract (`linkproof check --json` on a mechanism scene):
+//   {"scene": "...", "arithmetic": "exact", "mobility": 1,
+//    "grubler_mobility": 1, "rank": 7, "loops": 3, "unknowns": 7,
+//    "condition": 41.3,                        // 2-norm condition of the velocity system (double)
+//    "closure_residual": "0", "dimension_residual": 0,
+//    "links":  {"1": {"omega": "1", "omega_dot": "1/2"}, ...},      // relative to the ground
+//    "relative": {"1,2": {"omega": "...", "omega_dot": "..."}, ...}, // omega_ik = omega_i - omega_k
+//    "joints": {"12": {"v": ["..", ".."], "a": ["..", ".."]},         // prismatic: the slider's
+//               "D": {"v": [..], "a": [..], "sliding_v": "..", "sliding_a": ".."}},  point
+//    "points": {"P": {"v": [..], "a": [..]}},
+//    "tables": {"fourbar_polygon": {"A_A^n": "(x, y)", ...}},
+//    "claims": [{"id": "...", "verdict": "holds", "expected": "holds", "as_expected": true, ...}],
+//    "not_applicable": [...], "summary": {...}, "exit_status": 0}
+// Numbers are exact reduced "p/q" in exact mode, shortest round-trip decimals otherwise.
+// Claim entries are those of the polygon check (report/json_report.h).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+
+#include "mechanism/mechanism_catalogue.h"
+
+namespace linkproof {
+
+nlohmann::json to_json(const MechanismCheck& check);
+/// {"holds": n, "fails": n, "undefined": n, "inconclusive": n, "error": n, "unexpected_failures": n};
+/// with `strict` also "not_as_expected": n and "strict": true.
+nlohmann::json claims_summary_json(const std::vector<ClaimOutcome>& claims, bool strict = false);
+/// The text table of claims: id, verdict, expected, headline evidence; with `strict` a claim not
+/// as expected under it is marked "<-- NOT AS EXPECTED (strict)".
+void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims, bool strict = false);
+/// The claim table, the ids not applicable and the exit status (the end of a text report).
+void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
+                         const std::vector<std::string>& not_applicable, bool strict = false);
+void write_text(std::ostream& out, const MechanismCheck& check);
+
+}  // namespace linkproof

@@ -1,0 +1,38 @@
+// Reports of `linkproof prove` and `linkproof check-claim`: JSON (the contract in
+// docs/claims.md) and readable text. Per claim: id, verdict (proved, proved_generically with
+// `except`, proved_for with `proved_n`, disproved with `counterexample`, holds_on_samples with
+// the samples counted, error), scope, the proof's steps, per-n proofs with times and expression
+// sizes, timings. `strict`: only proved/proved_generically count as "as expected" for a true
+// claim (docs/verdicts.md); the JSON summary, the text and the exit status use the same rule.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <vector>
+
+#include "proof/prove.h"
+
+namespace linkproof {
+
+nlohmann::json to_json(const Counterexample& c);
+nlohmann::json to_json(const ProofResult& r, bool strict = false);
+/// {"claims": [...], "summary": {...}, "coordinates": "..."}
+nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict = false);
+
+void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool strict = false);
+
+/// 0 every claim as expected (ProofResult::is_as_expected(strict)); 1 otherwise; 3 if any claim
+/// errored.
+int exit_status(const std::vector<ProofResult>& results, bool strict = false);
+
+/// Prints the results as JSON or text and returns exit_status(results): the one ending of
+/// `prove` and `check-claim`.
+int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict = false);
+
+/// What the symbols of proofs mean.
+inline constexpr const char* kProofCoordinates =
+    "x_k, y_k: components of side r_k = K_{k+1} - K_k (k = 1..n-1); (px, py): joint K_n; in a proof for every n "
+    "x_j, x_l, x_{n-2}, x_{n-1} name the sides of two inputs j, l and the last two sides";
+
+}  // namespace linkproof
