@@ -3,18 +3,21 @@
 #include <array>
 #include <utility>
 
+#include "check/arithmetic_types.h"
+
 namespace linkproof {
 
 namespace {
-constexpr std::array<std::pair<Arithmetic, std::string_view>, 7> kNames{{
-    {Arithmetic::Exact, "exact"},
-    {Arithmetic::Double, "double"},
-    {Arithmetic::LongDouble, "long-double"},
-    {Arithmetic::Mp30, "mp30"},
-    {Arithmetic::Mp50, "mp50"},
-    {Arithmetic::Mp100, "mp100"},
-    {Arithmetic::Mp1000, "mp1000"},
-}};
+#define LINKPROOF_ARITHMETIC_NAME(enumerator, name, type) std::pair{Arithmetic::enumerator, std::string_view(name)},
+constexpr std::array kNames{LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_ARITHMETIC_NAME)};
+#undef LINKPROOF_ARITHMETIC_NAME
+static_assert(kNames.size() == std::tuple_size_v<ArithmeticScalarTypes>);
+constexpr bool in_enum_order() {
+  for (size_t k = 0; k < kNames.size(); ++k)
+    if (static_cast<size_t>(kNames[k].first) != k) return false;
+  return true;
+}
+static_assert(in_enum_order(), "LINKPROOF_FOR_EACH_ARITHMETIC must list the arithmetics in the enum's order");
 }  // namespace
 
 std::string_view to_string(Arithmetic a) {

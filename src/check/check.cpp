@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "check/inconclusive_cause.h"
-#include "check/scalar_dispatch.h"
+#include "check/arithmetic_types.h"
 
 namespace linkproof {
 
@@ -107,13 +107,10 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
   return out;
 }
 
-template ClaimOutcome run_claim<Rational>(const Claim&, const PolygonContext<Rational>&, Evidence);
-template ClaimOutcome run_claim<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&, Evidence);
-template ClaimOutcome run_claim<Tracked<long double>>(const Claim&, const PolygonContext<Tracked<long double>>&, Evidence);
-template ClaimOutcome run_claim<Tracked<MpFloat<30>>>(const Claim&, const PolygonContext<Tracked<MpFloat<30>>>&, Evidence);
-template ClaimOutcome run_claim<Tracked<MpFloat<50>>>(const Claim&, const PolygonContext<Tracked<MpFloat<50>>>&, Evidence);
-template ClaimOutcome run_claim<Tracked<MpFloat<100>>>(const Claim&, const PolygonContext<Tracked<MpFloat<100>>>&, Evidence);
-template ClaimOutcome run_claim<Tracked<MpFloat<1000>>>(const Claim&, const PolygonContext<Tracked<MpFloat<1000>>>&, Evidence);
+#define LINKPROOF_INSTANTIATE_RUN_CLAIM(enumerator, name, T) \
+  template ClaimOutcome run_claim<T>(const Claim&, const PolygonContext<T>&, Evidence);
+LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_INSTANTIATE_RUN_CLAIM)
+#undef LINKPROOF_INSTANTIATE_RUN_CLAIM
 
 namespace {
 

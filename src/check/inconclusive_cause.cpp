@@ -1,4 +1,5 @@
 #include "check/inconclusive_cause.h"
+#include "check/arithmetic_types.h"
 
 #include <cln/float.h>
 #include <fmt/format.h>
@@ -113,16 +114,10 @@ InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonConte
   return s.cause;
 }
 
-template InconclusiveCause find_inconclusive_cause<Tracked<double>>(const Claim&, const PolygonContext<Tracked<double>>&);
-template InconclusiveCause find_inconclusive_cause<Tracked<long double>>(const Claim&,
-                                                                         const PolygonContext<Tracked<long double>>&);
-template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<30>>>(const Claim&,
-                                                                         const PolygonContext<Tracked<MpFloat<30>>>&);
-template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<50>>>(const Claim&,
-                                                                         const PolygonContext<Tracked<MpFloat<50>>>&);
-template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<100>>>(const Claim&,
-                                                                          const PolygonContext<Tracked<MpFloat<100>>>&);
-template InconclusiveCause find_inconclusive_cause<Tracked<MpFloat<1000>>>(const Claim&,
-                                                                           const PolygonContext<Tracked<MpFloat<1000>>>&);
+// Every floating-point arithmetic (exact comparisons are never inconclusive).
+#define LINKPROOF_INSTANTIATE_CAUSE(enumerator, name, T) \
+  template InconclusiveCause find_inconclusive_cause<T>(const Claim&, const PolygonContext<T>&);
+LINKPROOF_FOR_EACH_FLOATING_ARITHMETIC(LINKPROOF_INSTANTIATE_CAUSE)
+#undef LINKPROOF_INSTANTIATE_CAUSE
 
 }  // namespace linkproof

@@ -1,5 +1,7 @@
 #include "check/judge.h"
 
+#include "check/arithmetic_types.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -203,20 +205,11 @@ std::string_view to_string(Side s) {
   return "";
 }
 
-// One instantiation per arithmetic of the claim tuple (claims/claim.h).
-template ComparisonOutcome judge<Rational>(const Comparison<Rational>&);
-template ComparisonOutcome judge<Tracked<double>>(const Comparison<Tracked<double>>&);
-template ComparisonOutcome judge<Tracked<long double>>(const Comparison<Tracked<long double>>&);
-template ComparisonOutcome judge<Tracked<MpFloat<30>>>(const Comparison<Tracked<MpFloat<30>>>&);
-template ComparisonOutcome judge<Tracked<MpFloat<50>>>(const Comparison<Tracked<MpFloat<50>>>&);
-template ComparisonOutcome judge<Tracked<MpFloat<100>>>(const Comparison<Tracked<MpFloat<100>>>&);
-template ComparisonOutcome judge<Tracked<MpFloat<1000>>>(const Comparison<Tracked<MpFloat<1000>>>&);
-template Verdict judge_verdict<Rational>(const Comparison<Rational>&);
-template Verdict judge_verdict<Tracked<double>>(const Comparison<Tracked<double>>&);
-template Verdict judge_verdict<Tracked<long double>>(const Comparison<Tracked<long double>>&);
-template Verdict judge_verdict<Tracked<MpFloat<30>>>(const Comparison<Tracked<MpFloat<30>>>&);
-template Verdict judge_verdict<Tracked<MpFloat<50>>>(const Comparison<Tracked<MpFloat<50>>>&);
-template Verdict judge_verdict<Tracked<MpFloat<100>>>(const Comparison<Tracked<MpFloat<100>>>&);
-template Verdict judge_verdict<Tracked<MpFloat<1000>>>(const Comparison<Tracked<MpFloat<1000>>>&);
+// One instantiation per arithmetic (check/arithmetic_types.h).
+#define LINKPROOF_INSTANTIATE_JUDGE(enumerator, name, T)          \
+  template ComparisonOutcome judge<T>(const Comparison<T>&);        \
+  template Verdict judge_verdict<T>(const Comparison<T>&);
+LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_INSTANTIATE_JUDGE)
+#undef LINKPROOF_INSTANTIATE_JUDGE
 
 }  // namespace linkproof

@@ -18,6 +18,7 @@
 
 #include "claims/polygon_context.h"
 #include "claims/rate_poly.h"
+#include "check/arithmetic_types.h"
 #include "core/multiprecision.h"
 #include "linkproof/claims/claim_info.h"
 #include "linkproof/core/verdict.h"
@@ -61,10 +62,9 @@ Comparison<T> compare(std::string label, L&& lhs, R&& rhs) {
 
 /// The arithmetics a claim can be evaluated in: exact rationals, and IEEE double, long double
 /// and CLN long floats at 128, 192, 384 and 3392 bits (mp30 ... mp1000), each with running
-/// error bounds (core/tracked.h). Adding a type here (and to check/arithmetic.h) is the only
-/// change a new arithmetic needs in the claims layer; a claim is instantiated once per type.
-using ClaimScalarTypes = std::tuple<Rational, Tracked<double>, Tracked<long double>, Tracked<MpFloat<30>>, Tracked<MpFloat<50>>,
-                                    Tracked<MpFloat<100>>, Tracked<MpFloat<1000>>>;
+/// error bounds (core/tracked.h). The list is check/arithmetic_types.h's: a new arithmetic there is
+/// one more instantiation of every claim.
+using ClaimScalarTypes = ArithmeticScalarTypes;  // every arithmetic (check/arithmetic_types.h)
 
 template <class T>
 using ClaimFunction = std::function<ClaimSides<T>(const PolygonContext<T>&)>;

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/tracked.h"
+
 namespace linkproof {
 
 namespace {
@@ -107,5 +109,7 @@ std::string format_rational(const Rational& q) {
   cln::fprint(out, q);  // CLN prints reduced p/q, and integers without a denominator
   return out.str();
 }
+
+double nearest_double(const Rational& q) { return round_rational<double>(q); }
 
 }  // namespace linkproof

@@ -14,7 +14,7 @@
 #include "mechanism/mechanism_vector_route.h"
 #include "mechanism/mechanism_closure.h"
 #include "mechanism/sub_mechanism.h"
-#include "check/scalar_dispatch.h"
+#include "check/arithmetic_types.h"
 
 namespace linkproof {
 

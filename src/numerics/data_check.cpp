@@ -269,12 +269,6 @@ DataCheck check_motion_data(const MechanismScene& scene, const MotionData& data)
   out.scene = scene.source;
   out.data = data.source;
   out.link_names = scene.linkage.link_names();
-  out.tolerance_rule =
-      "tolerance = radius of the Tracked<double> solve started from the data's digit uncertainties (positions and "
-      "input rates) + the uncertainty of the user's digits; differs iff |user - exact| > tolerance; inconclusive "
-      "if the tolerance is not finite or not smaller than |exact|; agrees otherwise (decided exactly); digits: half a "
-      "unit of the last digit, one ulp for 16+ significant digits (a printed double), integers and fractions exact; "
-      "the scene's coordinates are exact (one ulp for a 16+ digit decimal)";
   for (const MotionSample& s : data.samples) {
     SampleCheck c;
     c.line = s.line;

@@ -93,7 +93,6 @@ struct DataCheck {
   /// Samples by verdict, and inconsistent samples (any verdict).
   int agreeing = 0, differing = 0, inconclusive = 0, nothing_compared = 0, inconsistent = 0, unsolvable = 0;
   int compared = 0;  ///< recorded values compared in the whole file
-  std::string tolerance_rule;
 };
 
 DataCheck check_motion_data(const MechanismScene& scene, const MotionData& data);

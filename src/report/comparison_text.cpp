@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "report/number_text.h"
-#include "check/scalar_dispatch.h"
+#include "check/arithmetic_types.h"
 
 namespace linkproof {
 

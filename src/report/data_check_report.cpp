@@ -9,6 +9,14 @@ namespace linkproof {
 
 namespace {
 
+/// The verdict rule of check-data (numerics/data_check.h), stated in every report.
+const char* const kTolerancePolicy =
+    "tolerance = radius of the Tracked<double> solve started from the data's digit uncertainties (positions and "
+    "input rates) + the uncertainty of the user's digits; differs iff |user - exact| > tolerance; inconclusive "
+    "if the tolerance is not finite or not smaller than |exact|; agrees otherwise (decided exactly); digits: half a "
+    "unit of the last digit, one ulp for 16+ significant digits (a printed double), integers and fractions exact; "
+    "the scene's coordinates are exact (one ulp for a 16+ digit decimal)";
+
 // The JSON contract's spellings (docs/testing.md).
 const char* to_word(SampleVerdict v) {
   switch (v) {
@@ -83,7 +91,7 @@ nlohmann::json to_json(const DataCheck& check) {
   return {{"scene", check.scene},
           {"data", check.data},
           {"links", check.link_names},
-          {"tolerance_rule", check.tolerance_rule},
+          {"tolerance_rule", kTolerancePolicy},
           {"samples", samples},
           {"summary",
            {{"samples", check.samples.size()},
@@ -116,7 +124,7 @@ void write_text(std::ostream& out, const DataCheck& check) {
                  c.name, format_decimal(c.exact), c.user_text, c.difference, c.tolerance,
                  c.outcome == RateOutcome::Agrees ? std::string("agrees") : upper(to_word(c.outcome)));
   }
-  fmt::print(out, "\ntolerance: {}\n", check.tolerance_rule);
+  fmt::print(out, "\ntolerance: {}\n", kTolerancePolicy);
 }
 
 }  // namespace linkproof

@@ -17,8 +17,12 @@ ClaimResult from_outcome(const ClaimOutcome& o) {
   ClaimResult r;
   r.found = true;
   r.holds = o.verdict == Verdict::Holds;
-  r.verdict = std::string(to_string(o.verdict));
+  r.verdict = o.verdict;
   const ComparisonOutcome& h = o.headline;
+  if (o.error.empty() && h.residual && is_exact(*h.residual)) {
+    r.residual_exact = std::get<Rational>(*h.residual);
+    r.residual = nearest_double(*r.residual_exact);
+  }
   if (!o.error.empty())
     r.detail = o.error;
   else if (!h.undefined_quantity.empty())
@@ -31,8 +35,8 @@ ClaimResult from_outcome(const ClaimOutcome& o) {
 
 ClaimResult unknown(const std::string& id, const std::vector<std::string>& known) {
   ClaimResult r;
-  r.verdict = "unknown claim";
-  r.detail = fmt::format("no claim `{}` applies to this case; known here: {}", id, fmt::join(known, ", "));
+  r.verdict = Verdict::Error;
+  r.detail = fmt::format("unknown claim: no claim `{}` applies to this case; known here: {}", id, fmt::join(known, ", "));
   return r;
 }
 

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "core/scalar.h"
 #include "core/tracked.h"
@@ -38,6 +40,18 @@ std::vector<double> MechanismTruth::alpha_doubles() const {
   std::vector<double> out;
   for (const auto& l : links) out.push_back(ScalarTraits<double>::from_rational(l.alpha));
   return out;
+}
+
+std::vector<double> MechanismTruth::omega_doubles() const {
+  std::vector<double> out;
+  for (const auto& l : links) out.push_back(nearest_double(l.omega));
+  return out;
+}
+
+size_t MechanismTruth::link_index(std::string_view name) const {
+  for (size_t k = 0; k < links.size(); ++k)
+    if (links[k].link == name) return k;
+  throw std::out_of_range("scene `" + scene + "` has no link named `" + std::string(name) + "`");
 }
 
 MechanismTruth compute_truth(const MechanismScene& scene) {

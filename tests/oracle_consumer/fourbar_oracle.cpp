@@ -16,6 +16,11 @@ RC_GTEST_PROP(MyFourBar, AlphaMatchesLinkproof, ()) {
   lt::rc_assert_alpha_matches(*lt::gen_fourbar(), my_fourbar_alpha);
 }
 
+// The angular velocities too.
+RC_GTEST_PROP(MyFourBar, OmegaMatchesLinkproof, ()) {
+  lt::rc_assert_omega_matches(*lt::gen_fourbar(), my_fourbar_omega);
+}
+
 // ... also with extreme link ratios (1e+-8). (Near the toggle, Bias::NearDeadCentre, a plain
 // double loop solution loses more than a small multiple of linkproof's own bound: see
 // docs/testing.md; such a property needs a tolerance chosen for it.)
@@ -46,7 +51,7 @@ RC_GTEST_PROP(MyFourBar, GeneratedPentagonsSatisfyEq22, ()) {
   const lt::PolygonCase p = *lt::gen_polygon(o);
   lt::classify_case(p);
   const lt::ClaimResult r = lt::check_claim("dijksman1966.eq22", p);
-  RC_ASSERT(r.holds || r.verdict == "undefined");  // undefined: Q_j or P'_j at infinity (conventions §A6)
+  RC_ASSERT(r.holds || r.verdict == linkproof::Verdict::Undefined);  // undefined: Q_j or P'_j at infinity (conventions §A6)
 }
 
 TEST(MyFourBar, ClaimHoldsOnTheA8Pentagon) {

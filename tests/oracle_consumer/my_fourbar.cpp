@@ -6,7 +6,7 @@ std::vector<double> fourbar_alpha(const linkproof::Linkage& m, const std::vector
                                   bool planted_bug) {
   using linkproof::testing::joint_xy;
   const auto o2 = joint_xy(m, "O2"), a = joint_xy(m, "A"), b = joint_xy(m, "B"), o4 = joint_xy(m, "O4");
-  const double w2 = cln::double_approx(inputs[0].rate), al2 = cln::double_approx(inputs[0].rate_dot);
+  const double w2 = linkproof::nearest_double(inputs[0].rate), al2 = linkproof::nearest_double(inputs[0].rate_dot);
   // Loop O2 -> A -> B -> O4: r2 + r3 - r4 = const, r2 = A - O2, r3 = B - A, r4 = B - O4.
   const double r2x = a[0] - o2[0], r2y = a[1] - o2[1];
   const double r3x = b[0] - a[0], r3y = b[1] - a[1];
@@ -24,4 +24,15 @@ std::vector<double> fourbar_alpha(const linkproof::Linkage& m, const std::vector
   const double al3 = (-px * r4y + py * r4x) / det;
   const double al4 = (r3x * py - r3y * px) / det;
   return {0.0, al2, al3, al4};
+}
+
+std::vector<double> my_fourbar_omega(const linkproof::Linkage& m, const std::vector<linkproof::MechanismInput>& inputs) {
+  using linkproof::testing::joint_xy;
+  const auto o2 = joint_xy(m, "O2"), a = joint_xy(m, "A"), b = joint_xy(m, "B"), o4 = joint_xy(m, "O4");
+  const double w2 = linkproof::nearest_double(inputs[0].rate);
+  const double r2x = a[0] - o2[0], r2y = a[1] - o2[1];
+  const double r3x = b[0] - a[0], r3y = b[1] - a[1];
+  const double r4x = b[0] - o4[0], r4y = b[1] - o4[1];
+  const double det = -r3x * r4y + r3y * r4x;  // as in fourbar_alpha
+  return {0.0, w2, w2 * (r2x * r4y - r2y * r4x) / det, w2 * (r2x * r3y - r2y * r3x) / det};
 }

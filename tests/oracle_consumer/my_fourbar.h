@@ -12,6 +12,9 @@
 std::vector<double> fourbar_alpha(const linkproof::Linkage& m, const std::vector<linkproof::MechanismInput>& inputs,
                                   bool planted_bug);
 
+/// omega of every link (ground, crank, coupler, rocker), the velocity half of the same loop.
+std::vector<double> my_fourbar_omega(const linkproof::Linkage& m, const std::vector<linkproof::MechanismInput>& inputs);
+
 inline std::vector<double> my_fourbar_alpha(const linkproof::Linkage& m,
                                             const std::vector<linkproof::MechanismInput>& inputs) {
   return fourbar_alpha(m, inputs, false);

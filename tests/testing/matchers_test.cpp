@@ -6,6 +6,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <type_traits>
 
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/testing.h"
@@ -38,7 +40,41 @@ TEST(TestingMatchers, AngularAccelerationsMatchAcceptsTheTextbookAnswerOfConvent
   EXPECT_EQ(t.links[3].alpha, kSeed001Alpha4);
   EXPECT_THAT(kSeed001AlphaDoubles, AngularAccelerationsMatch(t, Tolerance::double_bound(1)));
   // The comparison is exact: 63/160 is not a double, so its nearest double misses a zero tolerance.
-  EXPECT_THAT(kSeed001AlphaDoubles, ::testing::Not(AngularAccelerationsMatch(t, 0.0)));
+  EXPECT_THAT(kSeed001AlphaDoubles, ::testing::Not(AngularAccelerationsMatch(t, Tolerance{})));
+}
+
+// The omegas of §B as decimal literals: -3/4 and 7/20 = 0.35 (0.35 is not a dyadic: its literal
+// is the nearest double, not the exact value).
+const std::vector<double> kSeed001OmegaDoubles = {0.0, 2.0, -0.75, 0.35};
+
+TEST(TestingMatchers, AngularVelocitiesMatchAcceptsTheTextbookOmegasAndRejectsAPerturbedOne) {
+  const MechanismTruth t = compute_truth(seed001_fourbar().scene);
+  EXPECT_THAT(kSeed001OmegaDoubles, AngularVelocitiesMatch(t, Tolerance::double_bound(1)));
+  EXPECT_THAT(t.omega_doubles(), ::testing::ElementsAreArray(kSeed001OmegaDoubles));
+  std::vector<double> wrong = kSeed001OmegaDoubles;
+  wrong[2] = -0.75 * (1 + 1e-12);
+  const auto m = ::testing::Matcher<const std::vector<double>&>(AngularVelocitiesMatch(t, Tolerance::double_bound(4)));
+  ::testing::StringMatchResultListener listener;
+  EXPECT_FALSE(m.MatchAndExplain(wrong, &listener));
+  EXPECT_THAT(listener.str(), ::testing::HasSubstr("exact omega"));
+  EXPECT_THAT(listener.str(), ::testing::HasSubstr("WRONG"));
+  // omega and alpha are different rates: the alphas are not the omegas.
+  EXPECT_THAT(kSeed001AlphaDoubles, ::testing::Not(AngularVelocitiesMatch(t, Tolerance::double_bound(4))));
+  EXPECT_EQ(t.link_index("coupler"), 2u);
+  EXPECT_THROW(t.link_index("no such link"), std::out_of_range);
+}
+
+TEST(TestingMatchers, ToleranceIsNeverABareNumber) {
+  static_assert(!std::is_convertible_v<double, Tolerance>);
+  const Tolerance a = Tolerance::absolute_to(1e-3);
+  EXPECT_EQ(a.absolute, 1e-3);
+  EXPECT_EQ(a.relative, 0);
+  EXPECT_EQ(a.double_bounds, 0);
+  const MechanismTruth t = compute_truth(seed001_fourbar().scene);
+  std::vector<double> off = kSeed001AlphaDoubles;
+  off[2] += 5e-4;
+  EXPECT_THAT(off, AngularAccelerationsMatch(t, Tolerance::absolute_to(1e-3)));
+  EXPECT_THAT(off, ::testing::Not(AngularAccelerationsMatch(t, Tolerance::absolute_to(1e-4))));
 }
 
 TEST(TestingMatchers, AngularAccelerationsMatchRejectsAWrongLinkAndShowsTheExactValue) {
@@ -68,6 +104,27 @@ TEST(TestingMatchers, ClaimHoldsOnTheA8PentagonAndExplainsAnErratum) {
   EXPECT_THAT(polygon_mechanism(p), ClaimHolds("mechanism.routes_agree"));
 }
 
+TEST(TestingMatchers, CheckClaimGivesATypedVerdictAndTheResidualAsExactAndDouble) {
+  const PolygonCase p{"polygon/scattered/n=5", Polygon<Rational>({pt(0, 0), pt(1, 4), pt(5, 5), pt(7, 1), pt(3, -2)}),
+                      {{2, -1}, {1, 3}}};
+  const ClaimResult holds = check_claim("dijksman1966.eq22", p);
+  EXPECT_TRUE(holds.found);
+  EXPECT_EQ(holds.verdict, Verdict::Holds);
+  ASSERT_TRUE(holds.residual_exact.has_value());
+  EXPECT_EQ(*holds.residual_exact, 0);
+  EXPECT_EQ(holds.residual, 0.0);
+  const ClaimResult erratum = check_claim("dijksman1966.eq22.unsigned_phi", p);
+  EXPECT_EQ(erratum.verdict, Verdict::Fails);
+  ASSERT_TRUE(erratum.residual_exact.has_value() && erratum.residual.has_value());
+  EXPECT_NE(*erratum.residual_exact, 0);
+  EXPECT_EQ(*erratum.residual, nearest_double(*erratum.residual_exact));
+  const ClaimResult unknown = check_claim("dijksman1966.no_such_eq", p);
+  EXPECT_FALSE(unknown.found);
+  EXPECT_EQ(unknown.verdict, Verdict::Error);
+  EXPECT_FALSE(unknown.residual.has_value());
+  EXPECT_THAT(unknown.detail, ::testing::HasSubstr("dijksman1966.eq22"));  // the known ids
+}
+
 RC_GTEST_PROP(TestingMatchers, Eq22HoldsOnEveryGeneratedPolygonWhereItsConstructionExists, ()) {
   PolygonOptions o;
   o.n_max = 6;
@@ -76,7 +133,7 @@ RC_GTEST_PROP(TestingMatchers, Eq22HoldsOnEveryGeneratedPolygonWhereItsConstruct
   const ClaimResult r = check_claim("dijksman1966.eq22", c);
   // Undefined where the construction is (Q_j or P'_j at infinity, conventions §A6); never fails.
   RC_CLASSIFY(!r.holds, "construction undefined");
-  RC_ASSERT(r.holds || r.verdict == "undefined");
+  RC_ASSERT(r.holds || r.verdict == Verdict::Undefined);
 }
 
 /// A planted bug: the truth, but the rocker's (last link's) alpha with the wrong sign; wrong
@@ -131,7 +188,7 @@ std::vector<double> closed_form_fourbar_alpha(const Linkage& m, const std::vecto
   const double th2 = std::atan2(a_[1] - o2[1], a_[0] - o2[0]);
   const double th3 = std::atan2(b_[1] - a_[1], b_[0] - a_[0]);
   const double th4 = std::atan2(b_[1] - o4[1], b_[0] - o4[0]);
-  const double w2 = cln::double_approx(in.at(0).rate), al2 = cln::double_approx(in.at(0).rate_dot);
+  const double w2 = nearest_double(in.at(0).rate), al2 = nearest_double(in.at(0).rate_dot);
   const double w3 = a * w2 * std::sin(th4 - th2) / (b * std::sin(th3 - th4));
   const double w4 = a * w2 * std::sin(th2 - th3) / (c * std::sin(th4 - th3));
   const double A = c * std::sin(th4), B = b * std::sin(th3), D = c * std::cos(th4), E = b * std::cos(th3);

@@ -25,4 +25,8 @@ std::string format_decimal(const Rational& q, int digits = 25);
 /// The exact value of a finite double (a dyadic rational).
 Rational rational_from_double(double x);
 
+/// The double nearest to q (ties to even); +-inf beyond double's range. For callers that want
+/// plain doubles of exact values without CLN's API.
+double nearest_double(const Rational& q);
+
 }  // namespace linkproof

@@ -8,17 +8,25 @@
 // The claim is evaluated in exact arithmetic (residual exactly 0 or not).
 #pragma once
 
+#include <optional>
 #include <string>
 
+#include "linkproof/core/exact.h"
+#include "linkproof/core/verdict.h"
 #include "linkproof/testing/cases.h"
 
 namespace linkproof::testing {
 
 struct ClaimResult {
-  bool found = false;       ///< the id names a claim that applies to this case
-  bool holds = false;       ///< verdict "holds"
-  std::string verdict;      ///< holds, fails, undefined, inconclusive, error; or "unknown claim"
-  std::string detail;       ///< the residual, the undefined quantity, or the known ids
+  bool found = false;  ///< the id names a claim that applies to this case
+  bool holds = false;  ///< verdict == Verdict::Holds
+  /// The verdict (Verdict::Error also when `found` is false: no such claim here).
+  Verdict verdict = Verdict::Error;
+  /// The headline comparison's residual lhs - rhs, exactly and as the nearest double; empty when
+  /// the claim is undefined, errored or was not found.
+  std::optional<Rational> residual_exact;
+  std::optional<double> residual;
+  std::string detail;  ///< the residual, the undefined quantity, or the known ids, in words
 };
 
 ClaimResult check_claim(const std::string& id, const PolygonCase& c);

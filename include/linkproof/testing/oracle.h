@@ -20,6 +20,7 @@
 #include <rapidcheck.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linkproof/io/mechanism_scene.h"
@@ -29,16 +30,29 @@
 namespace linkproof::testing {
 
 /// The failure text: the table and the scene YAML (see above).
-std::string failure_report(const MechanismCase& c, const AlphaComparison& comparison);
+std::string failure_report(const MechanismCase& c, const RateComparison& comparison);
+
+/// Checks `rate_fn(linkage, inputs)` (one value of `rate` per link) against the exact truth.
+template <class RateFn>
+void rc_assert_rates_match(const MechanismCase& c, Rate rate, RateFn&& rate_fn, const Tolerance& tolerance) {
+  classify_case(c);
+  const MechanismTruth truth = compute_truth(c.scene);
+  const std::vector<double> got = rate_fn(c.scene.linkage, c.scene.inputs);
+  const RateComparison comparison = compare_rates(truth, rate, got, tolerance);
+  if (!comparison.ok) RC_FAIL(failure_report(c, comparison));
+}
 
 template <class AlphaFn>
 void rc_assert_alpha_matches(const MechanismCase& c, AlphaFn&& alpha,
                              const Tolerance& tolerance = Tolerance::double_bound(4)) {
-  classify_case(c);
-  const MechanismTruth truth = compute_truth(c.scene);
-  const std::vector<double> got = alpha(c.scene.linkage, c.scene.inputs);
-  const AlphaComparison comparison = compare_alphas(truth, got, tolerance);
-  if (!comparison.ok) RC_FAIL(failure_report(c, comparison));
+  rc_assert_rates_match(c, Rate::Alpha, std::forward<AlphaFn>(alpha), tolerance);
+}
+
+/// The same for angular velocities: `omega(linkage, inputs)`, one per link.
+template <class OmegaFn>
+void rc_assert_omega_matches(const MechanismCase& c, OmegaFn&& omega,
+                             const Tolerance& tolerance = Tolerance::double_bound(4)) {
+  rc_assert_rates_match(c, Rate::Omega, std::forward<OmegaFn>(omega), tolerance);
 }
 
 }  // namespace linkproof::testing

@@ -17,7 +17,9 @@
 // exactly as `linkproof check` reports it.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "linkproof/core/exact.h"
@@ -45,6 +47,11 @@ struct MechanismTruth {
   /// The exact alphas in link order, as doubles rounded to nearest (what a perfect double
   /// implementation would return): a convenience for comparisons.
   std::vector<double> alpha_doubles() const;
+  /// The same for the exact omegas.
+  std::vector<double> omega_doubles() const;
+  /// The index of the link named `name` in `links`; throws std::out_of_range naming it if there
+  /// is none.
+  size_t link_index(std::string_view name) const;
 };
 
 /// Solves the scene exactly and in Tracked<double> (see above).
