@@ -18,7 +18,13 @@ std::string format_decimal(const Rational& q, int digits) {
   const bool negative = cln::minusp(q);
   const Rational m = cln::abs(q);
   // Exponent e with 10^e <= m < 10^(e+1), found from the double estimate and corrected exactly.
-  long e = static_cast<long>(std::floor(std::log10(cln::double_approx(m))));
+  const double estimate = std::log10(cln::double_approx(m));
+  long e = std::isfinite(estimate)
+               ? static_cast<long>(std::floor(estimate))
+               // beyond double's range: from the bit lengths (off by at most one or two, corrected below)
+               : static_cast<long>(static_cast<double>(static_cast<long>(cln::integer_length(cln::numerator(m))) -
+                                                       static_cast<long>(cln::integer_length(cln::denominator(m)))) *
+                                   0.30102999566398120);
   while (cln::expt(Rational(10), e) > m) --e;
   while (cln::expt(Rational(10), e + 1) <= m) ++e;
   const long shift = digits - 1 - e;
