@@ -42,7 +42,7 @@ int run_count(const CountArgs& a, std::ostream& out, std::ostream&) {
       for (auto& c : dijksman1966::count_claims_for_n(n, a.seed)) r.claims.push_back(std::move(c));
     }
   }
-  return print_report(out, r, a.json, r.exit_status());
+  return print_report(out, r, a.json, exit_status(r));
 }
 
 }  // namespace

@@ -62,8 +62,6 @@ struct CountReport {
   std::vector<CountClaim> claims;
   std::vector<std::string> notes;   ///< statements for the reader (e.g. the docs/conventions.md §A5.5 erratum)
   bool strict = false;              ///< --strict: holds_on_samples is not as expected
-  /// 0 every claim as expected, 1 otherwise.
-  int exit_status() const;
 };
 
 }  // namespace linkproof

@@ -174,7 +174,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
     };
     if (o.only_n) {
       if (!claim.info.applies_to(*o.only_n))
-        throw InputError("<command line>", "--n", "claim " + claim.info.id + " does not apply to n = " + std::to_string(*o.only_n));
+        throw InputError("<api>", "only_n", "claim " + claim.info.id + " does not apply to n = " + std::to_string(*o.only_n));
       prove_n(*o.only_n, nullptr, numbered_side, false);
       all_n = lo == hi;
     } else {

@@ -22,7 +22,8 @@
 namespace linkproof {
 
 nlohmann::json to_json(const CountClaim& c);
-nlohmann::json to_json(const CountReport& r);
+/// `exit_status`: the program's (cli/exit_status.h), printed as the "exit_status" key.
+nlohmann::json to_json(const CountReport& r, int exit_status);
 
 /// A table: verdict, id, expected, observed, relations x unknowns, time; then the notes and
 /// the statements of every claim that is not as expected.

@@ -3,7 +3,8 @@
 // `except`, proved_for with `proved_n`, disproved with `counterexample`, holds_on_samples with
 // the samples counted, error), scope, the proof's steps, per-n proofs with times and expression
 // sizes, timings. `strict`: only proved/proved_generically count as "as expected" for a true
-// claim (docs/verdicts.md); the JSON summary, the text and the exit status use the same rule.
+// claim (docs/verdicts.md); the JSON summary and the text use the same rule. The exit status is
+// the program's (cli/exit_status.h), printed as given.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -18,17 +19,13 @@ namespace linkproof {
 nlohmann::json to_json(const Counterexample& c);
 nlohmann::json to_json(const ProofResult& r, bool strict = false);
 /// {"claims": [...], "summary": {...}, "coordinates": "..."}
-nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict = false);
+nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict, int exit_status);
 
 void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool strict = false);
 
-/// 0 every claim as expected (ProofResult::is_as_expected(strict)); 1 otherwise; 3 if any claim
-/// errored.
-int exit_status(const std::vector<ProofResult>& results, bool strict = false);
-
-/// Prints the results as JSON or text and returns exit_status(results): the one ending of
+/// Prints the results as JSON (with `exit_status`, the program's) or text: the one ending of
 /// `prove` and `check-claim`.
-int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict = false);
+void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict, int exit_status);
 
 /// What the symbols of proofs mean.
 inline constexpr const char* kProofCoordinates =
