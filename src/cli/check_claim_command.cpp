@@ -138,9 +138,9 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     }
     results.push_back(std::move(r));
   }
-  const int status = exit_status(results, a.strict);
-  report_proofs(out, results, a.json, a.strict, status);
-  return status;
+  const ClaimsStatus status = proofs_status(results, a.strict);
+  report_proofs(out, results, a.json, status);
+  return status.exit_status;
 }
 
 }  // namespace

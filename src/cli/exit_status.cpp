@@ -50,18 +50,38 @@ int exit_status(const DataCheck& check) {
   return pass ? kAsExpected : kClaimFailed;
 }
 
-int exit_status(const CountReport& report) {
-  const auto as_expected = [&](const CountClaim& c) { return c.as_expected(report.strict); };
-  return std::all_of(report.claims.begin(), report.claims.end(), as_expected) ? kAsExpected : kClaimFailed;
+bool is_as_expected(const CountClaim& claim, bool strict) {
+  return strict ? claim.verdict == claim.expected : claim.as_expected();
 }
 
-int exit_status(const std::vector<ProofResult>& results, bool strict) {
-  int status = kAsExpected;
-  for (const ProofResult& r : results) {
-    if (r.verdict == ProofVerdict::Error) return kInternalError;
-    if (!r.is_as_expected(strict)) status = kClaimFailed;
-  }
-  return status;
+ClaimsStatus count_status(const CountReport& report, bool strict) {
+  ClaimsStatus s;
+  s.strict = strict;
+  for (const CountClaim& c : report.claims) s.as_expected.push_back(is_as_expected(c, strict));
+  const bool all = std::all_of(s.as_expected.begin(), s.as_expected.end(), [](bool b) { return b; });
+  s.exit_status = all ? kAsExpected : kClaimFailed;
+  return s;
 }
+
+bool is_as_expected(const ProofResult& result, bool strict) {
+  if (!result.is_as_expected()) return false;
+  if (!strict || result.expected != Expectation::Holds) return true;
+  return result.verdict == ProofVerdict::Proved || result.verdict == ProofVerdict::ProvedGenerically;
+}
+
+ClaimsStatus proofs_status(const std::vector<ProofResult>& results, bool strict) {
+  ClaimsStatus s;
+  s.strict = strict;
+  bool error = false;
+  for (const ProofResult& r : results) {
+    s.as_expected.push_back(is_as_expected(r, strict));
+    error = error || r.verdict == ProofVerdict::Error;
+    if (!s.as_expected.back()) s.exit_status = kClaimFailed;
+  }
+  if (error) s.exit_status = kInternalError;
+  return s;
+}
+
+int exit_status(const std::vector<ProofResult>& results, bool strict) { return proofs_status(results, strict).exit_status; }
 
 }  // namespace linkproof::cli

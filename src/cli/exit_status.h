@@ -47,12 +47,19 @@ int exit_status(const BatchSweepResult& result);
 /// nothing was compared: a run that decided nothing is not a pass).
 int exit_status(const DataCheck& check);
 
-/// count: 0 when every claim is as expected (CountClaim::as_expected under the report's
-/// --strict), 1 otherwise.
-int exit_status(const CountReport& report);
+/// The --strict policy on a counting claim: without `strict`, CountClaim::as_expected() (a
+/// stated "proved" is also met by holds_on_samples); with `strict` only the stated verdict.
+bool is_as_expected(const CountClaim& claim, bool strict);
+/// count: each claim's mark under the policy; exit 0 when every claim is as expected, else 1.
+ClaimsStatus count_status(const CountReport& report, bool strict = false);
 
-/// prove and check-claim: 3 if a claim errored, else 1 if one is not as expected
-/// (ProofResult::is_as_expected(strict)), else 0.
-int exit_status(const std::vector<ProofResult>& results, bool strict);
+/// The --strict policy on a proof: without `strict`, ProofResult::is_as_expected() (a true claim
+/// proved, or proved for some n, or holding on samples); with `strict` a true claim must be
+/// proved for its whole range (proved or proved_generically).
+bool is_as_expected(const ProofResult& result, bool strict);
+/// prove and check-claim: each claim's mark under the policy; exit 3 if a claim errored, else 1
+/// if one is not as expected, else 0.
+ClaimsStatus proofs_status(const std::vector<ProofResult>& results, bool strict = false);
+int exit_status(const std::vector<ProofResult>& results, bool strict = false);
 
 }  // namespace linkproof::cli

@@ -108,7 +108,7 @@ int report_claim_file(const ReportArgs& a, const std::string& text, std::ostream
   d.reproduce = reproduce_of(a, std::to_string(o.search.seed) + " (counterexample search)");
   report::add_reproduce_section(d);
   write_document(a, d, out, err);
-  return exit_status(results, /*strict=*/false);
+  return exit_status(results);
 }
 
 int report_mechanism(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {

@@ -17,6 +17,8 @@ template <class R>
 concept HasMemberExitStatus = requires(const R& r) { r.exit_status(); };
 template <class R>
 concept HasStrictMember = requires(const R& r) { r.strict; };
+template <class R>
+concept TakesAStrictFlag = requires(const R& r) { r.is_as_expected(true); } || requires(const R& r) { r.as_expected(true); };
 }  // namespace detect
 
 namespace linkproof {
@@ -40,6 +42,10 @@ TEST(LibraryResults, CarryNoExitCodeAndNoStrictPolicy) {
   EXPECT_FALSE(detect::HasMemberExitStatus<CountReport>);
   EXPECT_FALSE(detect::HasStrictMember<PolygonCheck>);
   EXPECT_FALSE(detect::HasStrictMember<MechanismCheck>);
+  EXPECT_FALSE(detect::HasStrictMember<CountReport>);
+  EXPECT_FALSE(detect::TakesAStrictFlag<ClaimOutcome>);
+  EXPECT_FALSE(detect::TakesAStrictFlag<ProofResult>);
+  EXPECT_FALSE(detect::TakesAStrictFlag<CountClaim>);
   // The detection itself works: the CLI's function is found where it is.
   EXPECT_TRUE((requires(const SweepReport& r) { cli::exit_status(r); }));
 }
@@ -63,6 +69,28 @@ TEST(ExitStatus, StrictCountsUndefinedOrInconclusiveTrueClaimsAsNotAsExpected) {
       {outcome(Expectation::Holds, Verdict::Fails), outcome(Expectation::Fails, Verdict::Error)});
   EXPECT_EQ(error.exit_status, 3);
   EXPECT_EQ(error.as_expected, (std::vector<bool>{false, false}));
+}
+
+TEST(ExitStatus, StrictProofsAndCountsNeedTheWholeRangeOrTheStatedVerdict) {
+  ProofResult p;
+  p.expected = Expectation::Holds;
+  p.verdict = ProofVerdict::ProvedFor;
+  const ClaimsStatus lenient = cli::proofs_status({p});
+  EXPECT_EQ(lenient.exit_status, 0);
+  const ClaimsStatus strict = cli::proofs_status({p}, true);
+  EXPECT_EQ(strict.exit_status, 1);
+  EXPECT_EQ(strict.as_expected, std::vector<bool>{false});
+  p.verdict = ProofVerdict::Error;
+  EXPECT_EQ(cli::exit_status(std::vector<ProofResult>{p}), 3);
+
+  CountReport r;
+  r.claims.resize(1);
+  r.claims[0].expected = CountVerdict::Proved;
+  r.claims[0].verdict = CountVerdict::HoldsOnSamples;
+  EXPECT_EQ(cli::count_status(r).exit_status, 0);
+  EXPECT_EQ(cli::count_status(r, true).exit_status, 1);
+  r.claims[0].verdict = CountVerdict::Proved;
+  EXPECT_EQ(cli::count_status(r, true).exit_status, 0);
 }
 
 TEST(ExitStatus, SweepAndBatchSweepAreDecidedFromTheirFacts) {
