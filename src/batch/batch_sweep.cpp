@@ -18,16 +18,6 @@
 
 namespace linkproof {
 
-int BatchSweepResult::exit_status() const {
-  switch (status) {
-    case Status::Complete: return report.exit_status();
-    case Status::Interrupted: return 128 + signal;
-    case Status::OutOfTime: return 2;
-    case Status::WorkerFailed: return 3;
-  }
-  return 3;
-}
-
 std::vector<long> shard_cases(const SweepOptions& o, const Shard& shard) {
   std::vector<long> cases;
   const long size = SweepPlan(o).size();
@@ -42,7 +32,7 @@ void write_sweep_scene(const std::string& dir, const SweepCase& c) {
   std::ofstream f(path, std::ios::binary | std::ios::trunc);
   f << sweep_scene_yaml(c.polygon);
   f.close();
-  if (!f) throw InputError(path, "--scenes", "cannot write the scene file");
+  if (!f) throw InputError(path, "scene directory", "cannot write the scene file");
 }
 
 
@@ -53,7 +43,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
   if (!o.scenes_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(o.scenes_dir, ec);
-    if (ec) throw InputError(o.scenes_dir, "--scenes", "cannot create the directory: " + ec.message());
+    if (ec) throw InputError(o.scenes_dir, "scene directory", "cannot create the directory: " + ec.message());
   }
 
   // Read back what an earlier run completed, then append.
@@ -62,6 +52,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
   size_t position = 0;
   std::optional<std::string> summary;
   long summary_number = 0;
+  LINKPROOF_ASSERT(o.out.empty() || o.exit_status, "a result file's summary line needs the exit status");
   if (!o.out.empty()) {
     file = std::make_unique<ResultFile>(o.out, o.resume, [&](const std::string& text, long number) {
       if (summary) throw InputError(o.out, fmt::format("line {}", number), "follows the summary line");
@@ -88,7 +79,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
   }
   sink->set_file(file.get());
   if (summary) {
-    if (position != cases.size() || *summary != sweep_summary_line(sink->tally().report(), o.shard))
+    if (position != cases.size() || *summary != sweep_summary_line(sink->tally().report(), o.shard, o.exit_status(sink->tally().report())))
       throw InputError(o.out, fmt::format("line {}", summary_number),
                        "the summary line does not match the cases above it (a file of another sweep, or edited)");
     result.already_complete = true;
@@ -151,7 +142,7 @@ BatchSweepResult run_batch_sweep(const std::vector<Claim>& catalogue, const Batc
                                  TimeBudget::limit_seconds(), done, cases.size());
   }
   if (result.status == BatchSweepResult::Status::Complete && file && !summary)
-    file->append(sweep_summary_line(sink->tally().report(), o.shard));
+    file->append(sweep_summary_line(sink->tally().report(), o.shard, o.exit_status(sink->tally().report())));
   result.report = sink->tally().report();
   result.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

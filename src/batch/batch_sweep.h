@@ -27,6 +27,9 @@ struct BatchSweepOptions {
   bool resume = false;        ///< continue `out` from its last complete case
   std::string scenes_dir;     ///< write each case with an unexpected outcome here as a scene
   std::ostream* progress = nullptr;  ///< progress bar target (a terminal), or null
+  /// The exit status the result file's summary line records (report/sweep_lines.h): required
+  /// with `out`.
+  SweepExitStatus exit_status;
 };
 
 struct BatchSweepResult {
@@ -38,14 +41,10 @@ struct BatchSweepResult {
   long cases_resumed = 0;  ///< cases read back from the result file
   long cases_run = 0;      ///< cases computed by this run
   bool already_complete = false;  ///< the result file already held the summary line
-
-  /// The CLI's exit code: the report's when complete; 128 + signal when interrupted; 2 when
-  /// stopped by the time budget (--max-seconds); 3 when a
-  /// worker failed.
-  int exit_status() const;
 };
 
-/// Runs (or continues) the sweep. InputError for a bad --out/--scenes path, or a result file that
+/// Runs (or continues) the sweep. InputError for a bad `out` or `scenes_dir` path (fields "result
+/// file" and "scene directory": the quantities; the command line names its options), or a result file that
 /// belongs to another sweep (different seed, n, count, arithmetic or shard), is corrupt or was
 /// edited (every line read back is checked: report/sweep_lines.h, check_case_identity); a
 /// ResultFileExists for a non-empty `out` without `resume`. std::bad_alloc when an allocation

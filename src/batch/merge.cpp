@@ -66,7 +66,7 @@ std::pair<SweepOptions, Shard> sweep_of_summary(const json& s, const std::string
 SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOptions& o, int shards,
                               const std::function<std::optional<std::string>(int)>& next_line,
                               const std::function<std::string(int)>& source, const std::string& out,
-                              const std::string& scenes_dir) {
+                              const std::string& scenes_dir, const SweepExitStatus& exit_status) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<ResultFile> file;
   if (!out.empty()) file = std::make_unique<ResultFile>(out, false, [](const std::string&, long) {});
@@ -94,14 +94,14 @@ SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOp
                        "the shard's summary line expected after its last case");
     if (read(s)) throw InputError(source(s), "<end>", "lines after the summary line");
   }
-  if (file) file->append(sweep_summary_line(sink.tally().report(), Shard{}));
+  if (file) file->append(sweep_summary_line(sink.tally().report(), Shard{}, exit_status(sink.tally().report())));
   SweepReport r = sink.tally().report();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
 
 SweepReport merge_sweep_files(const std::vector<Claim>& catalogue, const std::vector<std::string>& files,
-                              const std::string& out, const std::string& scenes_dir) {
+                              const std::string& out, const std::string& scenes_dir, const SweepExitStatus& exit_status) {
   if (files.empty()) throw InputError("<command line>", "FILES", "no shard files given");
   std::optional<SweepOptions> sweep;
   std::map<int, std::string> by_shard;  // K - 1 -> file
@@ -132,7 +132,7 @@ SweepReport merge_sweep_files(const std::vector<Claim>& catalogue, const std::ve
         if (std::getline(*in[static_cast<size_t>(s)], line)) return line;
         return std::nullopt;
       },
-      [&](int s) { return by_shard[s]; }, out, scenes_dir);
+      [&](int s) { return by_shard[s]; }, out, scenes_dir, exit_status);
 }
 
 }  // namespace linkproof

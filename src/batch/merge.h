@@ -22,14 +22,15 @@ std::pair<SweepOptions, Shard> sweep_of_summary(const nlohmann::json& summary, c
 /// next line of shard s + 1 (nullopt at its end) and `source(s)` names it for errors. Writes the
 /// whole sweep's result file to `out` (must not exist, or be empty; "": no file) and the scenes of cases with
 /// unexpected outcomes to `scenes_dir` (empty: none). Each shard must end with its summary line.
+/// `exit_status`: what the written summary line records (report/sweep_lines.h).
 SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOptions& o, int shards,
                               const std::function<std::optional<std::string>(int)>& next_line,
                               const std::function<std::string(int)>& source, const std::string& out,
-                              const std::string& scenes_dir);
+                              const std::string& scenes_dir, const SweepExitStatus& exit_status);
 
 /// merge_shard_lines over the result files of every shard, in any order: they must be the
 /// complete shards 1..N of one sweep.
 SweepReport merge_sweep_files(const std::vector<Claim>& catalogue, const std::vector<std::string>& files,
-                              const std::string& out, const std::string& scenes_dir);
+                              const std::string& out, const std::string& scenes_dir, const SweepExitStatus& exit_status);
 
 }  // namespace linkproof

@@ -12,16 +12,21 @@
 
 namespace linkproof {
 
+namespace {
+// What the errors are about: the quantity, named as such (the command line names its option).
+const char* const kField = "result file";
+}  // namespace
+
 ResultFile::ResultFile(const std::string& path, bool resume, const LineVisitor& visit) : path_(path) {
   std::error_code ec;
   const bool exists = std::filesystem::exists(path, ec);
   if (exists && !std::filesystem::is_regular_file(path, ec))
-    throw InputError(path, "--out", "is not a regular file (a result file is appended to and read back)");
+    throw InputError(path, kField, "is not a regular file (a result file is appended to and read back)");
   if (exists && !resume && std::filesystem::file_size(path, ec) > 0)
-    throw ResultFileExists(path, "--out", "exists and is not empty (a result file is never overwritten)");
+    throw ResultFileExists(path, kField, "exists and is not empty (a result file is never overwritten)");
   if (exists && resume) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "--out", "cannot be read");
+    if (!in) throw InputError(path, kField, "cannot be read");
     std::string line;
     long complete_bytes = 0, number = 0;
     while (std::getline(in, line)) {
@@ -32,11 +37,11 @@ ResultFile::ResultFile(const std::string& path, bool resume, const LineVisitor& 
     const long size = static_cast<long>(std::filesystem::file_size(path, ec));
     if (size > complete_bytes) {
       std::filesystem::resize_file(path, static_cast<std::uintmax_t>(complete_bytes), ec);
-      if (ec) throw InputError(path, "--out", "cannot cut off the incomplete last line: " + ec.message());
+      if (ec) throw InputError(path, kField, "cannot cut off the incomplete last line: " + ec.message());
     }
   }
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw InputError(path, "--out", std::string("cannot be opened for writing: ") + std::strerror(errno));
+  if (fd_ < 0) throw InputError(path, kField, std::string("cannot be opened for writing: ") + std::strerror(errno));
 }
 
 ResultFile::~ResultFile() {
@@ -49,7 +54,7 @@ void ResultFile::append(const std::string& line) {
   while (done < data.size()) {
     const ssize_t w = ::write(fd_, data.data() + done, data.size() - done);
     if (w < 0 && errno == EINTR) continue;
-    if (w < 0) throw InputError(path_, "--out", std::string("write failed: ") + std::strerror(errno));
+    if (w < 0) throw InputError(path_, kField, std::string("write failed: ") + std::strerror(errno));
     done += static_cast<size_t>(w);
   }
 }

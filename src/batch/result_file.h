@@ -28,9 +28,9 @@ class ResultFile {
   /// first and a trailing partial line is removed; without it, an existing non-empty file is a
   /// ResultFileExists (nothing is overwritten). A missing file is created either way. A path that
   /// exists and is not a regular file (/dev/null, a directory, a FIFO) is an InputError: a result
-  /// file is read back and appended to. Messages name no command-line option but the field
-  /// "--out" (every command that writes a result file calls it that): what the user can do
-  /// about it is for the command to say.
+  /// file is read back and appended to. Errors name the quantity, field "result file", and no
+  /// command-line option: the command names the option that gave the path, and says what the
+  /// user can do about it.
   ResultFile(const std::string& path, bool resume, const LineVisitor& visit);
   ~ResultFile();
   ResultFile(const ResultFile&) = delete;

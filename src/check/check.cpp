@@ -11,10 +11,9 @@
 
 namespace linkproof {
 
-bool ClaimOutcome::is_as_expected(bool strict) const {
+bool ClaimOutcome::is_as_expected() const {
   if (verdict == Verdict::Error) return false;
-  if (info.expected == Expectation::Holds) return strict ? verdict == Verdict::Holds : verdict != Verdict::Fails;
-  return true;
+  return info.expected != Expectation::Holds || verdict != Verdict::Fails;
 }
 
 namespace {
@@ -172,7 +171,7 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
       // The exact input does not fit this arithmetic's exponent range (e.g. 1e400 in double):
       // no claim can be judged in it, which is inconclusive, not an internal error.
       mark_out_of_range(r, catalogue, std::string("the input is outside the exponent range of this arithmetic (CLN ") +
-                                          e.what() + "); use --arith exact or a multiprecision arithmetic");
+                                          e.what() + "); exact arithmetic or a multiprecision one decides");
       return 0;
     }
     const PolygonContext<T>& ctx = *built;
@@ -206,17 +205,6 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
     r.omega[r.n - 1] = r.omega_dot[r.n - 1] = Rational(0);
   }
   return r;
-}
-
-int exit_status(const PolygonCheck& check) { return exit_status(check.claims, check.strict); }
-
-int exit_status(const std::vector<ClaimOutcome>& outcomes, bool strict) {
-  int status = 0;
-  for (const auto& c : outcomes) {
-    if (c.verdict == Verdict::Error) return 3;
-    if (!c.is_as_expected(strict)) status = 1;
-  }
-  return status;
 }
 
 }  // namespace linkproof

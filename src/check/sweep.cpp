@@ -6,13 +6,17 @@
 
 namespace linkproof {
 
-int SweepReport::exit_status() const {
-  int status = 0;
-  for (const auto& t : tallies) {
-    if (t.error > 0) return 3;
-    if (t.expected == Expectation::Holds && t.fails > 0) status = 1;
-  }
-  return status;
+long SweepReport::errors() const {
+  long n = 0;
+  for (const auto& t : tallies) n += t.error;
+  return n;
+}
+
+long SweepReport::unexpected_failures() const {
+  long n = 0;
+  for (const auto& t : tallies)
+    if (t.expected == Expectation::Holds) n += t.fails;
+  return n;
 }
 
 SweepReport run_sweep(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const SweepOptions& o) {

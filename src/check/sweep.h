@@ -48,8 +48,10 @@ struct SweepReport {
   /// For each erratum reading, one case where it fails (its disproof), if any was seen.
   std::vector<SweepExample> erratum_counterexamples;
 
-  /// 0 all as expected; 1 a true claim failed; 3 an evaluation error.
-  int exit_status() const;
+  /// Evaluations that errored, over every claim and polygon.
+  long errors() const;
+  /// Polygons on which a claim expected to hold failed, over every such claim.
+  long unexpected_failures() const;
 };
 
 SweepReport run_sweep(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const SweepOptions& options);

@@ -63,9 +63,10 @@ int run_bench_command(const BenchArgs& a, std::ostream& out, std::ostream& err) 
       err.flush();
     };
   }
-  const BenchResult r = run_bench(o);
+  const BenchResult r = naming_options({{"families", "--families"}}, [&] { return run_bench(o); });
   if (!a.out_dir.empty()) {
-    for (const auto& p : write_bench_files(r, a.out_dir))
+    const auto written = naming_options({{"output directory", "--out"}}, [&] { return write_bench_files(r, a.out_dir); });
+    for (const auto& p : written)
       if (!a.json) fmt::print(out, "wrote {}\n", p.string());
   }
   if (a.json)

@@ -107,13 +107,13 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     const PolygonScene scene = load_polygon_scene(a.scene);
     std::vector<Claim> claims;
     for (const auto& c : file.claims) claims.push_back(to_claim(c));
-    PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, arith);
-    check.strict = a.strict;
+    const PolygonCheck check = check_polygon(engine, claims, scene.name, scene.polygon, scene.rates, arith);
+    const ClaimsStatus status = claims_status(check.claims, a.strict);
     if (a.json)
-      out << json_text(to_json(check)) << "\n";
+      out << json_text(to_json(check, status)) << "\n";
     else
-      write_text(out, check, true);
-    return exit_status(check);
+      write_text(out, check, status, true);
+    return status.exit_status;
   }
   if (a.count < 1 || a.count > 100000) throw InputError("<command line>", "--count", "must be between 1 and 100000");
   int lo = 4, hi = 12;
@@ -138,7 +138,9 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     }
     results.push_back(std::move(r));
   }
-  return report_proofs(out, results, a.json, a.strict);
+  const ClaimsStatus status = proofs_status(results, a.strict);
+  report_proofs(out, results, a.json, status);
+  return status.exit_status;
 }
 
 }  // namespace

@@ -37,37 +37,38 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
     throw InputError("<command line>", "--no-terms",
                      "applies to polygon scenes only (a mechanism check prints no term-by-term tables): " + a.scene);
   MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), chosen_arithmetic(a.arith, scene.ask));
-  check.strict = a.strict;
   // Positions placed from dimensions: which are exact, which rationalised (never silent, whatever
   // the arithmetic): JSON keys beside the check's, and a section before the text report.
   // With an ask, only what it names (the second-order work is the `curvature` command's then).
   if ((scene.curvature.empty() && scene.joint_joining.empty()) || check.ask) {
+    const ClaimsStatus status = claims_status(check.claims, a.strict);
     if (a.json) {
-      nlohmann::json j = to_json(check);
+      nlohmann::json j = to_json(check, status);
       j.update(scene_placement_json(scene));
       out << json_text(j) << "\n";
     } else {
       write_scene_placement_text(out, scene);
-      write_text(out, check);
+      write_text(out, check, status);
     }
-    return exit_status(check);
+    return status.exit_status;
   }
   // The scene asks for the second-order work (docs/curvature.md): its claims join the check's,
   // its poles, centres and reductions are added to the report.
   const CurvatureCheck second = check_curvature(scene, {});
   check.claims.insert(check.claims.end(), second.claims.begin(), second.claims.end());
   check.not_applicable.insert(check.not_applicable.end(), second.not_applicable.begin(), second.not_applicable.end());
+  const ClaimsStatus status = claims_status(check.claims, a.strict);
   if (a.json) {
-    nlohmann::json j = to_json(check);
+    nlohmann::json j = to_json(check, status);
     j.update(curvature_json(*second.analysis, second.link_names));
     j.update(scene_placement_json(scene));
     out << j.dump(2) << "\n";
   } else {
     write_scene_placement_text(out, scene);
-    write_text(out, check);
+    write_text(out, check, status);
     write_curvature_text(out, *second.analysis, second.link_names);
   }
-  return exit_status(check);
+  return status.exit_status;
 }
 
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
@@ -84,12 +85,12 @@ int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   PolygonCheck check = check_polygon(engine, asked_claims(dijksman1966::catalogue(), scene.ask, a.scene), scene.name,
                                      scene.polygon, scene.rates, chosen_arithmetic(a.arith, scene.ask), Evidence::All,
                                      scene.ask);
-  check.strict = a.strict;
+  const ClaimsStatus status = claims_status(check.claims, a.strict);
   if (a.json)
-    out << json_text(to_json(check)) << "\n";
+    out << json_text(to_json(check, status)) << "\n";
   else
-    write_text(out, check, !a.no_terms);
-  return exit_status(check);
+    write_text(out, check, status, !a.no_terms);
+  return status.exit_status;
 }
 
 }  // namespace

@@ -13,9 +13,11 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "linkproof/check/arithmetic.h"
 #include "linkproof/check/ask.h"
+#include "exit_status.h"
 #include "report/json_report.h"
 #include "io/claim_file.h"
 
@@ -35,15 +37,31 @@ Args& bind_action(CLI::App* sub, Action& action, Run run) {
   return *args;
 }
 
-/// Prints `report` as JSON (its to_json) or as text (its write_text) and returns `status`, the
-/// exit code: how every subcommand ends.
+/// Prints `report` as JSON (its to_json, which records `status`) or as text (its write_text) and
+/// returns `status`, the exit code (exit_status.h): how every subcommand ends.
 template <class Report>
 int print_report(std::ostream& out, const Report& report, bool json, int status) {
   if (json)
-    out << json_text(to_json(report)) << "\n";
+    out << json_text(to_json(report, status)) << "\n";
   else
     write_text(out, report);
   return status;
+}
+
+/// Library errors name the quantity they are about (the field "result file", "only_n", ...); the
+/// command line names the option that gave it. Pairs {library field, option}.
+using OptionNames = std::vector<std::pair<std::string, std::string>>;
+/// To be called in a handler of `e`: rethrows it with the option as its field when `names` maps
+/// its field (a source "<api>" becoming "<command line>"), or else rethrows `e` itself.
+[[noreturn]] void rethrow_naming_option(const InputError& e, const OptionNames& names);
+/// Runs `work()`; an InputError it throws goes through rethrow_naming_option.
+template <class Work>
+decltype(auto) naming_options(const OptionNames& names, Work&& work) {
+  try {
+    return work();
+  } catch (const InputError& e) {
+    rethrow_naming_option(e, names);
+  }
 }
 
 /// "--arith" parsed, or an InputError naming the option.

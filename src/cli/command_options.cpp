@@ -56,6 +56,12 @@ std::optional<T> whole_number(const std::string& s) {
 
 }  // namespace
 
+void rethrow_naming_option(const InputError& e, const OptionNames& names) {
+  for (const auto& [field, option] : names)
+    if (e.field() == field) throw InputError(e.source() == "<api>" ? "<command line>" : e.source(), option, e.problem());
+  throw;
+}
+
 CLI::Validator seed_validator() {
   return CLI::Validator(
       [](std::string& s) -> std::string {

@@ -27,7 +27,6 @@ int run_count(const CountArgs& a, std::ostream& out, std::ostream&) {
   if (!a.polygons.empty() && !a.eightbar)
     throw InputError("<command line>", "--polygons", "only applies to --eightbar");
   CountReport r;
-  r.strict = a.strict;
   if (a.eightbar) {
     const std::string loops_text = a.polygons.empty() ? dijksman1966::kFig5Polygons : a.polygons;
     const auto loops = parse_polygon_list(loops_text, "<command line>", "--polygons");
@@ -42,7 +41,12 @@ int run_count(const CountArgs& a, std::ostream& out, std::ostream&) {
       for (auto& c : dijksman1966::count_claims_for_n(n, a.seed)) r.claims.push_back(std::move(c));
     }
   }
-  return print_report(out, r, a.json, r.exit_status());
+  const ClaimsStatus status = count_status(r, a.strict);
+  if (a.json)
+    out << json_text(to_json(r, status)) << "\n";
+  else
+    write_text(out, r, status);
+  return status.exit_status;
 }
 
 }  // namespace

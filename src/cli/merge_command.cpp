@@ -2,6 +2,7 @@
 #include "command.h"
 #include "dijksman1966.h"
 #include "batch/merge.h"
+#include "sweep_args.h"
 #include "report/json_report.h"
 #include "report/text_report.h"
 
@@ -17,8 +18,11 @@ struct MergeArgs {
 };
 
 int run_merge_command(const MergeArgs& a, std::ostream& out, std::ostream&) {
-  const SweepReport r = merge_sweep_files(dijksman1966::catalogue(), a.files, a.out, a.scenes);
-  return print_report(out, r, a.json, r.exit_status());
+  const SweepReport r = naming_options(kSweepOptionNames, [&] {
+    return merge_sweep_files(dijksman1966::catalogue(), a.files, a.out, a.scenes,
+                             [](const SweepReport& s) { return exit_status(s); });
+  });
+  return print_report(out, r, a.json, exit_status(r));
 }
 
 }  // namespace

@@ -34,7 +34,9 @@ int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
     results.push_back(prove_claim(engine, *c, o));
   }
   if (results.empty()) throw InputError("<command line>", "--n", "no chosen claim applies to n = " + std::to_string(*a.n));
-  return report_proofs(out, results, a.json, a.strict);
+  const ClaimsStatus status = proofs_status(results, a.strict);
+  report_proofs(out, results, a.json, status);
+  return status.exit_status;
 }
 
 }  // namespace

@@ -13,6 +13,9 @@
 
 namespace linkproof::cli {
 
+/// The options of sweep, merge and linkproof_mpi that give what the library's errors name.
+inline const OptionNames kSweepOptionNames{{"result file", "--out"}, {"scene directory", "--scenes"}};
+
 struct SweepArgs {
   std::string n_range = "4..12";
   int count = 100;

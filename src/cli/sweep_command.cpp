@@ -67,6 +67,7 @@ int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream
   b.out = a.out;
   b.resume = a.resume;
   b.scenes_dir = a.scenes;
+  b.exit_status = [](const SweepReport& s) { return exit_status(s); };
   if (a.resume && a.out.empty()) throw InputError("<command line>", "--resume", "needs --out FILE (the file to continue)");
   if (a.index && (!a.out.empty() || !a.shard.empty()))
     throw InputError("<command line>", "--index", "replays one case; it cannot be combined with --out or --shard");
@@ -76,7 +77,9 @@ int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream
   try {
     r = run_batch_sweep(dijksman1966::catalogue(), b);
   } catch (const ResultFileExists& e) {
-    throw InputError(e.source(), e.field(), e.problem() + "; pass --resume to continue it, or remove it");
+    throw InputError(e.source(), "--out", e.problem() + "; pass --resume to continue it, or remove it");
+  } catch (const InputError& e) {
+    rethrow_naming_option(e, kSweepOptionNames);
   }
   if (r.status != BatchSweepResult::Status::Complete) {
     // How to continue: the options are this command's, so the hint is written here.
@@ -87,9 +90,9 @@ int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream
     if (r.status == BatchSweepResult::Status::OutOfTime)
       throw InputError("<command line>", "--max-seconds", r.message + hint);
     fmt::print(err, "linkproof sweep: {}{}\n", r.message, hint);
-    return r.exit_status();
+    return exit_status(r);
   }
-  return print_report(out, r.report, a.json, r.exit_status());
+  return print_report(out, r.report, a.json, exit_status(r));
 }
 
 }  // namespace

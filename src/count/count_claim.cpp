@@ -50,8 +50,4 @@ CountClaim count_error(std::string id, std::string statement, std::string reason
   return c;
 }
 
-int CountReport::exit_status() const {
-  return std::all_of(claims.begin(), claims.end(), [this](const CountClaim& c) { return c.as_expected(strict); }) ? 0 : 1;
-}
-
 }  // namespace linkproof

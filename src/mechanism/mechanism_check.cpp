@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "core/tracked.h"
 #include "mechanism/mechanism_vector_route.h"
 #include "mechanism/mechanism_closure.h"
 #include "mechanism/sub_mechanism.h"
@@ -55,11 +56,21 @@ MechanismSolution<T> solve_by_vector_route(const MechanismScene& s, const Linkag
       [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd); }, s.source);
 }
 
-// IEEE values can be inf or NaN; CLN long floats throw instead (caught by the caller).
+// IEEE values can be inf or NaN; CLN long floats throw instead (caught by the caller). A
+// Tracked value is finite when its midpoint is (an unbounded radius is a bound, reported).
 template <class F>
 bool is_finite_value(const F& x) {
   if constexpr (std::is_floating_point_v<F>) return std::isfinite(x);
+  else if constexpr (requires { x.v; x.e; }) return is_finite_value(x.v);
   return true;
+}
+
+// The bound reported beside a value: none for an exact one, the running error bound (the radius)
+// of a Tracked one.
+std::optional<ResultRadius> bound_of(const Rational&) { return std::nullopt; }
+template <class F>
+std::optional<ResultRadius> bound_of(const Tracked<F>& x) {
+  return ResultRadius(x.e);
 }
 
 template <class F>
@@ -76,22 +87,32 @@ template <class T>
 void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMotion<T>& m) {
   const Linkage& g = s.linkage;
   for (int l = 0; l < g.link_count(); ++l) {
-    r.omega.push_back(result_number(m.omega[static_cast<size_t>(l)]));
-    r.omega_dot.push_back(result_number(m.omega_dot[static_cast<size_t>(l)]));
+    const T& w = m.omega[static_cast<size_t>(l)];
+    const T& wd = m.omega_dot[static_cast<size_t>(l)];
+    r.omega.push_back(result_number(w)), r.omega_bound.push_back(bound_of(w));
+    r.omega_dot.push_back(result_number(wd)), r.omega_dot_bound.push_back(bound_of(wd));
   }
   for (int i = 0; i < g.link_count(); ++i)
-    for (int k = i + 1; k < g.link_count(); ++k)
-      r.relative.push_back({g.link_name(i), g.link_name(k),
-                            result_number(m.omega[static_cast<size_t>(i)] - m.omega[static_cast<size_t>(k)]),
-                            result_number(m.omega_dot[static_cast<size_t>(i)] - m.omega_dot[static_cast<size_t>(k)])});
+    for (int k = i + 1; k < g.link_count(); ++k) {
+      const T w = m.omega[static_cast<size_t>(i)] - m.omega[static_cast<size_t>(k)];
+      const T wd = m.omega_dot[static_cast<size_t>(i)] - m.omega_dot[static_cast<size_t>(k)];
+      r.relative.push_back({g.link_name(i), g.link_name(k), result_number(w), result_number(wd), bound_of(w), bound_of(wd)});
+    }
+  // The values of a point's velocity and acceleration and their bounds.
+  const auto set_point = [](MechanismCheck::PointMotion& p, const Vec2<T>& v, const Vec2<T>& a) {
+    p.v[0] = result_number(v.x), p.v[1] = result_number(v.y), p.a[0] = result_number(a.x), p.a[1] = result_number(a.y);
+    p.v_bound[0] = bound_of(v.x), p.v_bound[1] = bound_of(v.y), p.a_bound[0] = bound_of(a.x), p.a_bound[1] = bound_of(a.y);
+  };
   for (int j = 0; j < g.joint_count(); ++j) {
     MechanismCheck::PointMotion p;
     p.name = g.joint(j).name;
-    const auto& v = m.joint_v[static_cast<size_t>(j)];
-    const auto& a = m.joint_a[static_cast<size_t>(j)];
-    p.v[0] = result_number(v.x), p.v[1] = result_number(v.y), p.a[0] = result_number(a.x), p.a[1] = result_number(a.y);
-    if (g.joint(j).type == JointType::Prismatic)
-      p.slide = result_number(m.slide[static_cast<size_t>(j)]), p.slide_dot = result_number(m.slide_dot[static_cast<size_t>(j)]);
+    set_point(p, m.joint_v[static_cast<size_t>(j)], m.joint_a[static_cast<size_t>(j)]);
+    if (g.joint(j).type == JointType::Prismatic) {
+      const T& sd = m.slide[static_cast<size_t>(j)];
+      const T& sdd = m.slide_dot[static_cast<size_t>(j)];
+      p.slide = result_number(sd), p.slide_dot = result_number(sdd);
+      p.slide_bound = bound_of(sd), p.slide_dot_bound = bound_of(sdd);
+    }
     r.joints.push_back(std::move(p));
   }
   for (const MechanismPoint& pt : s.points) {
@@ -113,7 +134,7 @@ void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMoti
     const Vec2<T> a = a0 + m.omega_dot[l] * perp(d) - (m.omega[l] * m.omega[l]) * d;
     MechanismCheck::PointMotion p;
     p.name = pt.name;
-    p.v[0] = result_number(v.x), p.v[1] = result_number(v.y), p.a[0] = result_number(a.x), p.a[1] = result_number(a.y);
+    set_point(p, v, a);
     r.points.push_back(std::move(p));
   }
 }
@@ -238,7 +259,7 @@ MechanismCheck check_solved(const MechanismScene& s, const std::vector<Mechanism
   } else {
     with_scalar_type(a, [&]<class T>() {
       if constexpr (!ScalarTraits<T>::is_exact) {
-        using F = decltype(T{}.v);  // the plain IEEE type of the arithmetic
+        using F = decltype(T{}.v);  // the plain floating type of the arithmetic; T = Tracked<F>
         // The exact solve above has accepted mobility and inputs: a floating route that fails
         // (a rank decided wrongly, an overflow) is a limit of the arithmetic, not bad input.
         std::string failure;
@@ -249,7 +270,9 @@ MechanismCheck check_solved(const MechanismScene& s, const std::vector<Mechanism
             if (!std::all_of(row.begin(), row.end(), is_finite_value<F>))
               throw ArithmeticLimit("a coefficient of the velocity constraints overflows (joint coordinates beyond "
                                     "the range of " + std::string(to_string(a)) + ")");
-          const auto floating = solve_by_vector_route<F>(s, g, s.inputs);
+          // Solved in Tracked<F>: the midpoints are F's own solve (the same operations, pivots
+          // and rank decisions), each with its running error bound.
+          const auto floating = solve_by_vector_route<T>(s, g, s.inputs);
           if (floating.mobility == truth.mobility && floating.rank == truth.rank && all_finite(floating.motion))
             fill_motion(r, s, floating.motion);
           else
@@ -313,10 +336,12 @@ std::vector<int> asked_links(const MechanismScene& s) {
 void keep_asked_rows(MechanismCheck& r, const SceneAsk& ask) {
   std::vector<std::string> names;
   std::vector<ResultNumber> omega, omega_dot;
+  std::vector<std::optional<ResultRadius>> omega_bound, omega_dot_bound;
   const auto add_link = [&](const std::string& name) {
     if (std::find(names.begin(), names.end(), name) != names.end()) return;
     const auto k = static_cast<size_t>(std::find(r.link_names.begin(), r.link_names.end(), name) - r.link_names.begin());
     names.push_back(name), omega.push_back(r.omega[k]), omega_dot.push_back(r.omega_dot[k]);
+    omega_bound.push_back(r.omega_bound[k]), omega_dot_bound.push_back(r.omega_dot_bound[k]);
   };
   for (const AskedRate& x : ask.rates) add_link(x.subject.name);
   for (const AskedName& x : ask.links) add_link(x.name);
@@ -327,6 +352,7 @@ void keep_asked_rows(MechanismCheck& r, const SceneAsk& ask) {
   std::erase_if(r.points, [&](const auto& p) { return !asked_point(p); });
   r.computed_links = r.link_names;
   r.link_names = std::move(names), r.omega = std::move(omega), r.omega_dot = std::move(omega_dot);
+  r.omega_bound = std::move(omega_bound), r.omega_dot_bound = std::move(omega_dot_bound);
   r.relative.clear();
 }
 
@@ -362,8 +388,6 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
   keep_asked_rows(r, *s.ask);
   return r;
 }
-
-int exit_status(const MechanismCheck& check) { return exit_status(check.claims, check.strict); }
 
 MechanismCheck check_mechanism(const MechanismScene& s, Arithmetic a) { return check_mechanism(s, {}, a); }
 

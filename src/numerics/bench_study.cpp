@@ -188,7 +188,7 @@ BenchResult run_bench(const BenchOptions& o) {
     if (!find_extreme_family(name)) {
       std::string known;
       for (const ExtremeFamily& f : extreme_families()) known += (known.empty() ? "" : ", ") + f.name;
-      throw InputError("<command line>", "--families", "unknown family '" + name + "' (known: " + known + ")");
+      throw InputError("<api>", "families", "unknown family '" + name + "' (known: " + known + ")");
     }
   std::vector<const ExtremeFamily*> families;
   for (const ExtremeFamily& f : extreme_families())

@@ -75,7 +75,7 @@ struct BenchResult {
   std::vector<AdaptiveSummary> adaptive;  ///< random pentagons; the extreme-family corpus
 };
 
-/// Runs the study. Unknown family names are an InputError naming --families.
+/// Runs the study. Unknown family names are an InputError("<api>", "families", ...).
 BenchResult run_bench(const BenchOptions& options);
 
 /// The parameter as text: "1e-8", "0", "1000".

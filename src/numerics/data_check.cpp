@@ -295,10 +295,4 @@ DataCheck check_motion_data(const MechanismScene& scene, const MotionData& data)
   return out;
 }
 
-int exit_status(const DataCheck& check) {
-  // A run that compared nothing, or could not decide a value, is not a pass.
-  const bool pass = check.compared > 0 && check.differing + check.inconclusive + check.inconsistent + check.unsolvable == 0;
-  return pass ? 0 : 1;
-}
-
 }  // namespace linkproof

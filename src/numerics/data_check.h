@@ -97,9 +97,4 @@ struct DataCheck {
 
 DataCheck check_motion_data(const MechanismScene& scene, const MotionData& data);
 
-/// 0: every sample consistent, at least one value compared, and every compared value agrees
-/// (a sample with nothing recorded does not count against it); 1 otherwise (a value differs or
-/// is inconclusive, a sample is inconsistent or unsolvable, or nothing was compared).
-int exit_status(const DataCheck& check);
-
 }  // namespace linkproof

@@ -129,13 +129,13 @@ std::string to_string(ProofVerdict v) {
   return "error";
 }
 
-bool ProofResult::is_as_expected(bool strict) const {
+bool ProofResult::is_as_expected() const {
   if (expected == Expectation::Fails) return verdict == ProofVerdict::Disproved;
   switch (verdict) {
     case ProofVerdict::Proved:
     case ProofVerdict::ProvedGenerically: return true;
     case ProofVerdict::ProvedFor:
-    case ProofVerdict::HoldsOnSamples: return !strict;
+    case ProofVerdict::HoldsOnSamples: return true;
     case ProofVerdict::Disproved:
     case ProofVerdict::Error: return false;
   }
@@ -174,7 +174,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
     };
     if (o.only_n) {
       if (!claim.info.applies_to(*o.only_n))
-        throw InputError("<command line>", "--n", "claim " + claim.info.id + " does not apply to n = " + std::to_string(*o.only_n));
+        throw InputError("<api>", "only_n", "claim " + claim.info.id + " does not apply to n = " + std::to_string(*o.only_n));
       prove_n(*o.only_n, nullptr, numbered_side, false);
       all_n = lo == hi;
     } else {

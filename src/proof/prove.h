@@ -70,10 +70,11 @@ struct ProofResult {
   /// False when the claim has no symbolic form (e.g. |x| of an expression): no proof could be
   /// attempted, and only exact instances can decide (check-claim samples them).
   bool symbolic = true;
-  /// A true claim: proved or proved_generically; and, unless strict, also proved_for or
-  /// holds_on_samples (positive verdicts that say what they rest on). An erratum: disproved.
-  /// Error is never as expected.
-  bool is_as_expected(bool strict = false) const;
+  /// A true claim: proved or proved_generically, and also proved_for or holds_on_samples
+  /// (positive verdicts that say what they rest on). An erratum: disproved. Error is never as
+  /// expected. (The program's --strict, under which only proofs for the whole range count, is
+  /// the command line's policy.)
+  bool is_as_expected() const;
 };
 
 /// The largest n of a proof at one n (`only_n`). Its cost grows about as n^3: eq. (22) takes

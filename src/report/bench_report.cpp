@@ -246,11 +246,11 @@ std::string family_svg(const FamilyCurve& c) {
 std::vector<std::filesystem::path> write_bench_files(const BenchResult& r, const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("<command line>", "--out", "cannot create directory '" + dir.string() + "': " + ec.message());
+  if (ec) throw InputError("<api>", "output directory", "cannot create directory '" + dir.string() + "': " + ec.message());
   std::vector<std::filesystem::path> written;
   const auto write = [&](const std::string& name, const std::string& text) {
     const std::filesystem::path p = dir / name;
-    write_file_atomically(p, text, "--out");
+    write_file_atomically(p, text, "output directory");
     written.push_back(p);
   };
   write("bench.md", to_markdown(r));

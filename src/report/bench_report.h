@@ -36,7 +36,8 @@ std::string pareto_svg(const BenchResult& r);
 std::string family_svg(const FamilyCurve& c);
 
 /// Writes bench.md, bench.json, pareto.svg and family_<name>.svg into `dir` (created if
-/// missing); returns the paths written. Throws InputError naming --out if it cannot write.
+/// missing); returns the paths written. Throws InputError(.., "output directory", ..) if it
+/// cannot write.
 std::vector<std::filesystem::path> write_bench_files(const BenchResult& r, const std::filesystem::path& dir);
 
 }  // namespace linkproof

@@ -25,13 +25,15 @@ nlohmann::json to_json(const CountClaim& c) {
   return j;
 }
 
-nlohmann::json to_json(const CountReport& r) {
+nlohmann::json to_json(const CountReport& r, const ClaimsStatus& status) {
+  LINKPROOF_ASSERT(status.as_expected.size() == r.claims.size(), "one status per claim");
   nlohmann::json claims = nlohmann::json::array();
   int proved = 0, on_samples = 0, disproved = 0, error = 0;
   double seconds = 0;
-  for (const auto& c : r.claims) {
+  for (size_t k = 0; k < r.claims.size(); ++k) {
+    const CountClaim& c = r.claims[k];
     claims.push_back(to_json(c));
-    claims.back()["as_expected"] = c.as_expected(r.strict);
+    claims.back()["as_expected"] = static_cast<bool>(status.as_expected[k]);
     if (c.samples) claims.back()["samples"] = c.samples;
     (c.verdict == CountVerdict::Proved            ? proved
      : c.verdict == CountVerdict::HoldsOnSamples ? on_samples
@@ -45,24 +47,26 @@ nlohmann::json to_json(const CountReport& r) {
           {"summary",
            {{"proved", proved}, {"holds_on_samples", on_samples}, {"disproved", disproved}, {"error", error},
             {"seconds", seconds}}},
-          {"exit_status", r.exit_status()}};
+          {"exit_status", status.exit_status}};
 }
 
-void write_text(std::ostream& out, const CountReport& r) {
+void write_text(std::ostream& out, const CountReport& r, const ClaimsStatus& status) {
+  LINKPROOF_ASSERT(status.as_expected.size() == r.claims.size(), "one status per claim");
   fmt::print(out, "linkproof count: {}\n\n", r.subject);
   fmt::print(out, "{:<16} {:<42} {:>24} {:>24} {:>16} {:>9}\n", "verdict", "claim", "stated", "computed",
              "relations x unk", "ms");
-  for (const auto& c : r.claims) {
+  for (size_t k = 0; k < r.claims.size(); ++k) {
+    const CountClaim& c = r.claims[k];
     const std::string size = c.rank ? fmt::format("{} x {}", c.rank->relations, c.rank->unknowns) : "";
     const std::string ms = c.rank ? fmt::format("{:.1f}", 1000 * c.rank->seconds) : "";
     std::string verdict(to_string(c.verdict));
-    if (!c.as_expected(r.strict)) verdict += "!";
+    if (!status.as_expected[k]) verdict += "!";
     fmt::print(out, "{:<16} {:<42} {:>24} {:>24} {:>16} {:>9}\n", verdict, c.id, c.expected_value,
                c.observed_value, size, ms);
   }
   int bad = 0;
-  for (const auto& c : r.claims)
-    if (!c.as_expected(r.strict) || c.verdict == CountVerdict::Error) {
+  for (size_t k = 0; k < r.claims.size(); ++k)
+    if (const CountClaim& c = r.claims[k]; !status.as_expected[k] || c.verdict == CountVerdict::Error) {
       if (bad++ == 0) fmt::print(out, "\n");
       fmt::print(out, "{} {} (expected {}): {}\n  {}\n", c.id, to_string(c.verdict), to_string(c.expected),
                  c.reason, c.statement);

@@ -18,14 +18,17 @@
 #include <ostream>
 
 #include "count/count_claim.h"
+#include "report/claims_status.h"
 
 namespace linkproof {
 
 nlohmann::json to_json(const CountClaim& c);
-nlohmann::json to_json(const CountReport& r);
+/// `status`: the program's decisions (report/claims_status.h): each claim's "as_expected" (with
+/// --strict, holds_on_samples is not) and the "exit_status" key.
+nlohmann::json to_json(const CountReport& r, const ClaimsStatus& status);
 
 /// A table: verdict, id, expected, observed, relations x unknowns, time; then the notes and
 /// the statements of every claim that is not as expected.
-void write_text(std::ostream& out, const CountReport& r);
+void write_text(std::ostream& out, const CountReport& r, const ClaimsStatus& status);
 
 }  // namespace linkproof

@@ -101,17 +101,15 @@ json curvature_json(const CurvatureAnalysis& a, const std::vector<std::string>& 
   return {{"poles", poles}, {"curvature_centres", centres}, {"reductions", reductions}};
 }
 
-int exit_status(const CurvatureCheck& c) { return exit_status(c.claims); }
-
-json to_json(const CurvatureCheck& c) {
+json to_json(const CurvatureCheck& c, const ClaimsStatus& status) {
   json j = curvature_json(*c.analysis, c.link_names);
   json claims = json::array();
   for (const auto& cl : c.claims) claims.push_back(to_json(cl));
   j["scene"] = c.scene;
   j["claims"] = claims;
   j["not_applicable"] = c.not_applicable;
-  j["summary"] = claims_summary_json(c.claims);
-  j["exit_status"] = exit_status(c);
+  j["summary"] = claims_summary_json(c.claims, status);
+  j["exit_status"] = status.exit_status;
   return j;
 }
 
@@ -144,10 +142,10 @@ void write_curvature_text(std::ostream& out, const CurvatureAnalysis& a, const s
   }
 }
 
-void write_text(std::ostream& out, const CurvatureCheck& c) {
+void write_text(std::ostream& out, const CurvatureCheck& c, const ClaimsStatus& status) {
   fmt::print(out, "scene {} (exact arithmetic)\n", c.scene);
   write_curvature_text(out, *c.analysis, c.link_names);
-  write_claim_section(out, c.claims, c.not_applicable);
+  write_claim_section(out, c.claims, c.not_applicable, status);
 }
 
 }  // namespace linkproof

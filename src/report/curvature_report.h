@@ -27,17 +27,17 @@
 #include <ostream>
 
 #include "mechanism/curvature_analysis.h"
+#include "report/claims_status.h"
 
 namespace linkproof {
 
 /// The keys "poles", "curvature_centres", "reductions" of `analysis` (added to check --json).
 nlohmann::json curvature_json(const CurvatureAnalysis& analysis, const std::vector<std::string>& link_names);
 
-nlohmann::json to_json(const CurvatureCheck& check);
-void write_text(std::ostream& out, const CurvatureCheck& check);
+/// `status`: the program's decisions on the claims (report/claims_status.h), printed here.
+nlohmann::json to_json(const CurvatureCheck& check, const ClaimsStatus& status);
+void write_text(std::ostream& out, const CurvatureCheck& check, const ClaimsStatus& status);
 /// The text tables of poles, centres and reductions (shared with `check`).
 void write_curvature_text(std::ostream& out, const CurvatureAnalysis& analysis, const std::vector<std::string>& link_names);
-
-int exit_status(const CurvatureCheck& check);
 
 }  // namespace linkproof

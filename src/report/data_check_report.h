@@ -26,7 +26,8 @@
 
 namespace linkproof {
 
-nlohmann::json to_json(const DataCheck& check);
+/// `exit_status`: the program's (cli/exit_status.h), printed as the "exit_status" key.
+nlohmann::json to_json(const DataCheck& check, int exit_status);
 void write_text(std::ostream& out, const DataCheck& check);
 
 }  // namespace linkproof

@@ -4,6 +4,8 @@
 #include <fmt/ranges.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
+
 #include "report/comparison_text.h"
 #include "report/json_report.h"
 #include "report/number_text.h"
@@ -17,57 +19,84 @@ namespace {
 json point_json(const MechanismCheck::PointMotion& p) {
   json j{{"v", {number_text(p.v[0]), number_text(p.v[1])}}, {"a", {number_text(p.a[0]), number_text(p.a[1])}}};
   if (p.slide) j["sliding_v"] = number_text(*p.slide), j["sliding_a"] = number_text(*p.slide_dot);
+  // Floating arithmetic: the bound of each value (both components are bounded or neither).
+  if (p.v_bound[0] && p.v_bound[1] && p.a_bound[0] && p.a_bound[1]) {
+    j["v_bound"] = {radius_text(*p.v_bound[0]), radius_text(*p.v_bound[1])};
+    j["a_bound"] = {radius_text(*p.a_bound[0]), radius_text(*p.a_bound[1])};
+  }
+  if (p.slide_bound && p.slide_dot_bound)
+    j["sliding_v_bound"] = radius_text(*p.slide_bound), j["sliding_a_bound"] = radius_text(*p.slide_dot_bound);
   return j;
+}
+
+// {"omega": .., "omega_dot": ..}, with their bounds in a floating arithmetic.
+json rates_json(const ResultNumber& omega, const ResultNumber& omega_dot, const std::optional<ResultRadius>& omega_bound,
+                const std::optional<ResultRadius>& omega_dot_bound) {
+  json j{{"omega", number_text(omega)}, {"omega_dot", number_text(omega_dot)}};
+  if (omega_bound && omega_dot_bound)
+    j["omega_bound"] = radius_text(*omega_bound), j["omega_dot_bound"] = radius_text(*omega_dot_bound);
+  return j;
+}
+
+// A value as text, followed by its bound when it has one: "-0.75000000000000011 +- 2.22e-16".
+std::string bounded_text(const ResultNumber& x, const std::optional<ResultRadius>& bound) {
+  return bound ? number_text(x) + " +- " + radius_short_text(*bound) : number_text(x);
 }
 
 }  // namespace
 
-json claims_summary_json(const std::vector<ClaimOutcome>& claims, bool strict) {
+json claims_summary_json(const std::vector<ClaimOutcome>& claims, const ClaimsStatus& status) {
+  LINKPROOF_ASSERT(status.as_expected.size() == claims.size(), "one status per claim");
   json summary{{"holds", 0}, {"fails", 0}, {"undefined", 0}, {"inconclusive", 0}, {"error", 0},
                {"unexpected_failures", 0}};
-  if (strict) summary["not_as_expected"] = 0, summary["strict"] = true;
-  for (const auto& cl : claims) {
+  if (status.strict) summary["not_as_expected"] = 0, summary["strict"] = true;
+  for (size_t k = 0; k < claims.size(); ++k) {
+    const ClaimOutcome& cl = claims[k];
     const std::string v(to_string(cl.verdict));
     summary[v] = summary[v].get<int>() + 1;
     if (cl.is_unexpected_failure()) summary["unexpected_failures"] = summary["unexpected_failures"].get<int>() + 1;
-    if (strict && !cl.is_as_expected(true)) summary["not_as_expected"] = summary["not_as_expected"].get<int>() + 1;
+    if (status.strict && !status.as_expected[k])
+      summary["not_as_expected"] = summary["not_as_expected"].get<int>() + 1;
   }
   return summary;
 }
 
-void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims, bool strict) {
+void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims, const ClaimsStatus& status) {
+  LINKPROOF_ASSERT(status.as_expected.size() == claims.size(), "one status per claim");
   fmt::print(out, "\n{:<48} {:<13} {:<9} {}\n", "claim", "verdict", "expected", "evidence");
-  for (const auto& cl : claims) {
+  for (size_t k = 0; k < claims.size(); ++k) {
+    const ClaimOutcome& cl = claims[k];
     std::string evidence = cl.error;
     if (evidence.empty()) {
       const auto& h = cl.headline;
       evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
                                                  : fmt::format("{}: {} vs {}", h.label, lhs_text(h), rhs_text(h));
     }
-    if (strict && !cl.is_as_expected(true)) evidence += "  <-- NOT AS EXPECTED (strict)";
+    if (status.strict && !status.as_expected[k]) evidence += "  <-- NOT AS EXPECTED (strict)";
     fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
                evidence);
   }
 }
 
 void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
-                         const std::vector<std::string>& not_applicable, bool strict) {
-  write_claim_table(out, claims, strict);
+                         const std::vector<std::string>& not_applicable, const ClaimsStatus& status) {
+  write_claim_table(out, claims, status);
   if (!not_applicable.empty()) {
     fmt::print(out, "\nnot applicable:");
     for (const auto& id : not_applicable) fmt::print(out, " {}", id);
     fmt::print(out, "\n");
   }
-  fmt::print(out, "\nexit status {}{}\n", exit_status(claims, strict),
-             strict ? " (strict: undefined or inconclusive on a true claim counts)" : "");
+  fmt::print(out, "\nexit status {}{}\n", status.exit_status,
+             status.strict ? " (strict: undefined or inconclusive on a true claim counts)" : "");
 }
 
-json to_json(const MechanismCheck& c) {
+json to_json(const MechanismCheck& c, const ClaimsStatus& status) {
   json links = json::object(), relative = json::object(), joints = json::object(), points = json::object(),
        tables = json::object(), claims = json::array();
   for (size_t l = 0; l < c.link_names.size(); ++l)
-    links[c.link_names[l]] = {{"omega", number_text(c.omega[l])}, {"omega_dot", number_text(c.omega_dot[l])}};
-  for (const auto& r : c.relative) relative[r.i + "," + r.k] = {{"omega", number_text(r.omega)}, {"omega_dot", number_text(r.omega_dot)}};
+    links[c.link_names[l]] = rates_json(c.omega[l], c.omega_dot[l], c.omega_bound[l], c.omega_dot_bound[l]);
+  for (const auto& r : c.relative)
+    relative[r.i + "," + r.k] = rates_json(r.omega, r.omega_dot, r.omega_bound, r.omega_dot_bound);
   for (const auto& p : c.joints) joints[p.name] = point_json(p);
   for (const auto& p : c.points) points[p.name] = point_json(p);
   for (const auto& t : c.tables) {
@@ -76,7 +105,7 @@ json to_json(const MechanismCheck& c) {
     tables[t.title] = rows;
   }
   for (const auto& cl : c.claims) claims.push_back(to_json(cl));
-  const json summary = claims_summary_json(c.claims, c.strict);
+  const json summary = claims_summary_json(c.claims, status);
   json j = {{"scene", c.scene},
           {"arithmetic", std::string(to_string(c.arithmetic))},
           {"arithmetic_note", c.arithmetic_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.arithmetic_note)},
@@ -96,7 +125,7 @@ json to_json(const MechanismCheck& c) {
           {"claims", claims},
           {"not_applicable", c.not_applicable},
           {"summary", summary},
-          {"exit_status", exit_status(c)}};
+          {"exit_status", status.exit_status}};
   if (c.ask) {
     j["ask"] = c.ask->describe();
     j["computed"] = {{"links", c.computed_links}, {"of_links", c.all_links}, {"of_loops", c.all_loops}};
@@ -104,7 +133,7 @@ json to_json(const MechanismCheck& c) {
   return j;
 }
 
-void write_text(std::ostream& out, const MechanismCheck& c) {
+void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& status) {
   fmt::print(out, "scene {} ({} arithmetic)\n", c.scene, to_string(c.arithmetic));
   fmt::print(out, "mobility {} (Gruebler {}), {} loops, {} unknowns, rank {}, condition {:.3g}, closure residual {}\n\n",
              c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, format_rational(c.closure_residual));
@@ -114,22 +143,32 @@ void write_text(std::ostream& out, const MechanismCheck& c) {
                "loops): nothing else is needed for what is asked\n\n",
                fmt::join(c.ask->describe(), "; "), fmt::join(c.computed_links, ", "), c.computed_links.size(),
                c.all_links, c.loops, c.all_loops);
+  // Exact: the columns of old; with bounds ("value +- bound") they are wider.
+  const bool bounded = std::any_of(c.omega_bound.begin(), c.omega_bound.end(), [](const auto& b) { return b.has_value(); });
+  const int rate_width = bounded ? 40 : 28, point_width = bounded ? 64 : 40;
   if (!c.ask || !c.link_names.empty()) {
-    fmt::print(out, "{:<10} {:>28} {:>28}\n", "link", "omega", "omega_dot");
+    fmt::print(out, "{:<10} {:>{}} {:>{}}\n", "link", "omega", rate_width, "omega_dot", rate_width);
     for (size_t l = 0; l < c.link_names.size(); ++l)
-      fmt::print(out, "{:<10} {:>28} {:>28}\n", c.link_names[l], number_text(c.omega[l]), number_text(c.omega_dot[l]));
+      fmt::print(out, "{:<10} {:>{}} {:>{}}\n", c.link_names[l], bounded_text(c.omega[l], c.omega_bound[l]), rate_width,
+                 bounded_text(c.omega_dot[l], c.omega_dot_bound[l]), rate_width);
   }
-  if (!c.ask || !c.joints.empty() || !c.points.empty()) fmt::print(out, "\n{:<10} {:>40} {:>40}\n", "joint", "v", "a");
+  if (!c.ask || !c.joints.empty() || !c.points.empty())
+    fmt::print(out, "\n{:<10} {:>{}} {:>{}}\n", "joint", "v", point_width, "a", point_width);
   for (const auto* list : {&c.joints, &c.points})
     for (const auto& p : *list)
-      fmt::print(out, "{:<10} {:>40} {:>40}{}\n", p.name, fmt::format("({}, {})", number_text(p.v[0]), number_text(p.v[1])),
-                 fmt::format("({}, {})", number_text(p.a[0]), number_text(p.a[1])),
-                 p.slide ? fmt::format("   sliding v {}, a {}", number_text(*p.slide), number_text(*p.slide_dot)) : "");
+      fmt::print(out, "{:<10} {:>{}} {:>{}}{}\n", p.name,
+                 fmt::format("({}, {})", bounded_text(p.v[0], p.v_bound[0]), bounded_text(p.v[1], p.v_bound[1])),
+                 point_width,
+                 fmt::format("({}, {})", bounded_text(p.a[0], p.a_bound[0]), bounded_text(p.a[1], p.a_bound[1])),
+                 point_width,
+                 p.slide ? fmt::format("   sliding v {}, a {}", bounded_text(*p.slide, p.slide_bound),
+                                       bounded_text(*p.slide_dot, p.slide_dot_bound))
+                         : "");
   for (const auto& t : c.tables) {
     fmt::print(out, "\n{}\n", t.title);
     for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);
   }
-  write_claim_section(out, c.claims, c.not_applicable, c.strict);
+  write_claim_section(out, c.claims, c.not_applicable, status);
 }
 
 }  // namespace linkproof

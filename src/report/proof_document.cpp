@@ -95,7 +95,7 @@ Document build_proof_document(const ClaimFile& file, const std::vector<ProofResu
   Table t{{plain("claim"), plain("expected"), plain("verdict"), plain("rests on")}, {}};
   int as_expected = 0;
   for (const auto& r : results) {
-    const json j = to_json(r);
+    const json j = to_json(r, r.is_as_expected());
     as_expected += j.value("as_expected", false) ? 1 : 0;
     t.rows.push_back({plain(str(j, "id")), plain(str(j, "expected")),
                       plain(str(j, "verdict") + (j.value("as_expected", false) ? "" : " (NOT as expected)")),
@@ -109,7 +109,7 @@ Document build_proof_document(const ClaimFile& file, const std::vector<ProofResu
   Section proof{"proof", "Proofs", {}, {}};
   Section counter{"counterexamples", "Counterexamples", {}, {}};
   for (size_t k = 0; k < results.size(); ++k) {
-    const json j = to_json(results[k]);
+    const json j = to_json(results[k], results[k].is_as_expected());
     const auto it = claims.find(results[k].id);
     proof.subsections.push_back(claim_subsection(j, it == claims.end() ? nullptr : it->second));
     if (!results[k].counterexample) continue;

@@ -26,11 +26,11 @@ nlohmann::json to_json(const Counterexample& c) {
           {"seconds", c.seconds}};
 }
 
-nlohmann::json to_json(const ProofResult& r, bool strict) {
+nlohmann::json to_json(const ProofResult& r, bool as_expected) {
   nlohmann::json j = {{"id", r.id},
                       {"expected", r.expected == Expectation::Holds ? "holds" : "fails"},
                       {"verdict", to_string(r.verdict)},
-                      {"as_expected", r.is_as_expected(strict)},
+                      {"as_expected", as_expected},
                       {"scope", r.scope},
                       {"seconds", r.seconds}};
   nlohmann::json except = nlohmann::json::array();
@@ -54,14 +54,16 @@ nlohmann::json to_json(const ProofResult& r, bool strict) {
   return j;
 }
 
-nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict) {
+nlohmann::json to_json(const std::vector<ProofResult>& results, const ClaimsStatus& status) {
+  LINKPROOF_ASSERT(status.as_expected.size() == results.size(), "one status per claim");
   nlohmann::json claims = nlohmann::json::array();
   nlohmann::json verdicts = nlohmann::json::object();
   int as_expected = 0;
   double seconds = 0;
-  for (const auto& r : results) {
-    claims.push_back(to_json(r, strict));
-    as_expected += r.is_as_expected(strict);
+  for (size_t k = 0; k < results.size(); ++k) {
+    const ProofResult& r = results[k];
+    claims.push_back(to_json(r, static_cast<bool>(status.as_expected[k])));
+    as_expected += status.as_expected[k];
     seconds += r.seconds;
     verdicts[to_string(r.verdict)] = verdicts.value(to_string(r.verdict), 0) + 1;
   }
@@ -72,17 +74,19 @@ nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict) {
             {"as_expected", as_expected},
             {"not_as_expected", static_cast<int>(results.size()) - as_expected},
             {"verdicts", verdicts},
-            {"strict", strict},
+            {"strict", status.strict},
             {"seconds", seconds}}},
-          {"exit_status", exit_status(results, strict)}};
+          {"exit_status", status.exit_status}};
 }
 
-void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool strict) {
+void write_text(std::ostream& out, const std::vector<ProofResult>& results, const ClaimsStatus& status) {
+  LINKPROOF_ASSERT(status.as_expected.size() == results.size(), "one status per claim");
   fmt::print(out, "coordinates: {}\n\n", kProofCoordinates);
-  for (const auto& r : results) {
+  for (size_t k = 0; k < results.size(); ++k) {
+    const ProofResult& r = results[k];
     fmt::print(out, "{}  [{}]  {}{}  ({:.3f} s){}\n", r.id, r.expected == Expectation::Holds ? "holds" : "fails",
                to_string(r.verdict), r.scope.empty() ? "" : " for " + r.scope, r.seconds,
-               r.is_as_expected(strict) ? "" : "  <-- NOT AS EXPECTED");
+               status.as_expected[k] ? "" : "  <-- NOT AS EXPECTED");
     if (!r.error.empty()) fmt::print(out, "  error: {}\n", r.error);
     for (const auto& a : r.argument) fmt::print(out, "  {}\n", a);
     if (!r.not_local.empty()) {
@@ -113,26 +117,16 @@ void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool
     out << "\n";
   }
   int ok = 0;
-  for (const auto& r : results) ok += r.is_as_expected(strict);
+  for (const bool as_expected : status.as_expected) ok += as_expected;
   fmt::print(out, "summary: {}/{} claims as expected{}\n", ok, results.size(),
-             strict ? " (strict: only proofs for the whole range count)" : "");
+             status.strict ? " (strict: only proofs for the whole range count)" : "");
 }
 
-int exit_status(const std::vector<ProofResult>& results, bool strict) {
-  int status = 0;
-  for (const auto& r : results) {
-    if (r.verdict == ProofVerdict::Error) return 3;
-    if (!r.is_as_expected(strict)) status = 1;
-  }
-  return status;
-}
-
-int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict) {
+void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, const ClaimsStatus& status) {
   if (json)
-    out << json_text(to_json(results, strict)) << "\n";
+    out << json_text(to_json(results, status)) << "\n";
   else
-    write_text(out, results, strict);
-  return exit_status(results, strict);
+    write_text(out, results, status);
 }
 
 }  // namespace linkproof

@@ -2,8 +2,9 @@
 // docs/claims.md) and readable text. Per claim: id, verdict (proved, proved_generically with
 // `except`, proved_for with `proved_n`, disproved with `counterexample`, holds_on_samples with
 // the samples counted, error), scope, the proof's steps, per-n proofs with times and expression
-// sizes, timings. `strict`: only proved/proved_generically count as "as expected" for a true
-// claim (docs/verdicts.md); the JSON summary, the text and the exit status use the same rule.
+// sizes, timings. Whether a claim is as expected, and the exit status, are the program's
+// decisions (report/claims_status.h; with --strict only proved/proved_generically count for a
+// true claim, docs/verdicts.md): the JSON and the text print them as given.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -12,23 +13,20 @@
 #include <vector>
 
 #include "proof/prove.h"
+#include "report/claims_status.h"
 
 namespace linkproof {
 
 nlohmann::json to_json(const Counterexample& c);
-nlohmann::json to_json(const ProofResult& r, bool strict = false);
-/// {"claims": [...], "summary": {...}, "coordinates": "..."}
-nlohmann::json to_json(const std::vector<ProofResult>& results, bool strict = false);
+/// One claim; `as_expected` as decided (ProofResult::is_as_expected() outside a command).
+nlohmann::json to_json(const ProofResult& r, bool as_expected);
+/// {"claims": [...], "summary": {...}, "coordinates": "...", "exit_status": ...}
+nlohmann::json to_json(const std::vector<ProofResult>& results, const ClaimsStatus& status);
 
-void write_text(std::ostream& out, const std::vector<ProofResult>& results, bool strict = false);
+void write_text(std::ostream& out, const std::vector<ProofResult>& results, const ClaimsStatus& status);
 
-/// 0 every claim as expected (ProofResult::is_as_expected(strict)); 1 otherwise; 3 if any claim
-/// errored.
-int exit_status(const std::vector<ProofResult>& results, bool strict = false);
-
-/// Prints the results as JSON or text and returns exit_status(results): the one ending of
-/// `prove` and `check-claim`.
-int report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, bool strict = false);
+/// Prints the results as JSON or text: the one ending of `prove` and `check-claim`.
+void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, const ClaimsStatus& status);
 
 /// What the symbols of proofs mean.
 inline constexpr const char* kProofCoordinates =

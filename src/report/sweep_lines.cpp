@@ -67,8 +67,8 @@ std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic) {
   return line.dump();
 }
 
-std::string sweep_summary_line(const SweepReport& report, const Shard& shard) {
-  json s = to_json(report);
+std::string sweep_summary_line(const SweepReport& report, const Shard& shard, int exit_status) {
+  json s = to_json(report, exit_status);
   s.erase("seconds");  // the only field that differs between equal runs
   if (!shard.whole()) s["shard"] = fmt::format("{}/{}", shard.k, shard.n);
   return json{{"summary", s}}.dump();

@@ -16,6 +16,7 @@
 // writer; it is not a signature (anyone can recompute it), so it does not stop a forgery.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -34,8 +35,12 @@ struct Shard {
 /// One case as a result-file line (no trailing newline).
 std::string sweep_case_line(const SweepCase& c, Arithmetic arithmetic);
 /// The summary line (no trailing newline): the report as `sweep --json` prints it, without
-/// the run time, plus "shard" when the sweep is sharded.
-std::string sweep_summary_line(const SweepReport& report, const Shard& shard);
+/// the run time, plus "shard" when the sweep is sharded. `exit_status` is the program's decision
+/// on the report (cli/exit_status.h), recorded as given.
+std::string sweep_summary_line(const SweepReport& report, const Shard& shard, int exit_status);
+/// How the writers of result files (batch/batch_sweep.h, batch/merge.h) learn the exit status a
+/// summary line records: the program's function of the report, handed to them.
+using SweepExitStatus = std::function<int(const SweepReport&)>;
 
 /// What one line of a result file holds.
 struct SweepLine {

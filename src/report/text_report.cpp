@@ -52,7 +52,8 @@ std::string evidence(const ComparisonOutcome& c) { return evidence(to_json(c)); 
 
 }  // namespace
 
-void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
+void write_text(std::ostream& out, const PolygonCheck& c, const ClaimsStatus& status, bool show_terms) {
+  LINKPROOF_ASSERT(status.as_expected.size() == c.claims.size(), "one status per claim");
   fmt::print(out, "linkproof check: {} (n = {}, {} arithmetic)\n", c.scene, c.n, to_string(c.arithmetic));
   if (c.dead_centre) {
     fmt::print(out, "DEAD CENTRE: D = r_{} x r_{} = 0: {}\n", c.n - 2, c.n - 1, c.dead_centre_reason);
@@ -75,9 +76,10 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
 
   if (!c.claims.empty() || !c.ask) fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
   int unexpected = 0, not_as_expected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
-  for (const auto& cl : c.claims) {
-    std::string mark = cl.is_as_expected(c.strict) ? "" : "  <-- UNEXPECTED";
-    not_as_expected += !cl.is_as_expected(c.strict);
+  for (size_t k = 0; k < c.claims.size(); ++k) {
+    const ClaimOutcome& cl = c.claims[k];
+    std::string mark = status.as_expected[k] ? "" : "  <-- UNEXPECTED";
+    not_as_expected += !status.as_expected[k];
     if (cl.info.expected == Expectation::Fails && cl.verdict == Verdict::Holds)
       mark = "  (this misreading coincides with the truth on this configuration)";
     fmt::print(out, "{:<34} {:<9} {:<13} {}{}\n", cl.info.id, to_string(cl.info.expected), to_string(cl.verdict),
@@ -113,7 +115,7 @@ void write_text(std::ostream& out, const PolygonCheck& c, bool show_terms) {
   fmt::print(out, "summary: {}/{} true claims hold, {}/{} erratum readings fail here, {} unexpected failure(s), {} not as "
              "expected{}\n",
              true_held, true_total, erratum_failed, erratum_total, unexpected, not_as_expected,
-             c.strict ? " (strict: undefined or inconclusive on a true claim counts)" : "");
+             status.strict ? " (strict: undefined or inconclusive on a true claim counts)" : "");
 }
 
 void write_text(std::ostream& out, const SweepReport& s) {

@@ -6,10 +6,13 @@
 
 #include "check/check_polygon.h"
 #include "check/sweep.h"
+#include "report/claims_status.h"
 
 namespace linkproof {
 
-void write_text(std::ostream& out, const PolygonCheck& check, bool show_terms = true);
+/// `status`: the program's decisions (report/claims_status.h): each claim's "<-- UNEXPECTED"
+/// mark and the summary's count of claims not as expected follow its policy.
+void write_text(std::ostream& out, const PolygonCheck& check, const ClaimsStatus& status, bool show_terms = true);
 void write_text(std::ostream& out, const SweepReport& sweep);
 
 }  // namespace linkproof

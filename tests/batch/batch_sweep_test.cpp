@@ -6,6 +6,7 @@
 
 #include "batch/sweep_files.h"
 #include "dijksman1966.h"
+#include "exit_status.h"
 #include "report/json_report.h"
 
 namespace linkproof {
@@ -64,7 +65,8 @@ TEST(BatchSweep, OutputWithoutNewOptionsIsTheOldSingleLoop) {
   SweepOptions o;
   o.n_min = 4, o.n_max = 8, o.count = 10, o.seed = 11;
   GroundTruthEngine engine;
-  const std::string loop = to_json(run_sweep(engine, dijksman1966::catalogue(), o)).dump(2);
+  const SweepReport report = run_sweep(engine, dijksman1966::catalogue(), o);
+  const std::string loop = to_json(report, cli::exit_status(report)).dump(2);
   EXPECT_EQ(without_seconds(plain.out), without_seconds(loop));
   EXPECT_EQ(reference().json, without_seconds(loop));
   const auto text1 = run_cli(sweep_args({"--jobs", "1"}));

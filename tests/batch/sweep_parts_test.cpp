@@ -10,6 +10,7 @@
 #include "batch/merge.h"
 #include "batch/progress_bar.h"
 #include "batch/worker_pool.h"
+#include "exit_status.h"
 #include "report/json_report.h"
 
 namespace linkproof {
@@ -27,6 +28,17 @@ std::vector<Claim> failing_catalogue() {
   for (Claim& claim : c)
     if (claim.info.id == "dijksman1966.eq9a.reversed_beta") claim.info.expected = Expectation::Holds;
   return c;
+}
+
+/// The program's exit status of a sweep, as the summary lines of result files record it.
+const SweepExitStatus kExitStatus = [](const SweepReport& r) { return cli::exit_status(r); };
+
+/// A batch sweep writing its result file to `out` (empty: none).
+BatchSweepOptions batch_options(std::string out = "") {
+  BatchSweepOptions o;
+  o.out = std::move(out);
+  o.exit_status = kExitStatus;
+  return o;
 }
 
 SweepOptions small_sweep(Arithmetic a = Arithmetic::Exact) {
@@ -63,12 +75,12 @@ TEST(SweepLines, BadLineNamesFileLineAndField) {
 
 TEST(BatchSweep, FailingCasesAreWrittenAsScenesThatCheckReads) {
   const std::string dir = fresh_dir("sweep_scenes");
-  BatchSweepOptions o;
+  BatchSweepOptions o = batch_options();
   o.sweep = small_sweep();
   o.scenes_dir = dir + "/scenes";
   const BatchSweepResult r = run_batch_sweep(failing_catalogue(), o);
   ASSERT_EQ(r.status, BatchSweepResult::Status::Complete);
-  EXPECT_EQ(r.exit_status(), 1);
+  EXPECT_EQ(cli::exit_status(r), 1);
   long scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(o.scenes_dir)) {
     ++scenes;
@@ -92,9 +104,8 @@ TEST(BatchSweep, ShardsOfAFailingSweepMergeToTheExamplesOfOneRun) {
   // Each shard keeps its own first examples; the merge must pick the whole sweep's first ones.
   const std::string dir = fresh_dir("sweep_merge_examples");
   const auto catalogue = failing_catalogue();
-  BatchSweepOptions whole;
+  BatchSweepOptions whole = batch_options(dir + "/whole.jsonl");
   whole.sweep = small_sweep();
-  whole.out = dir + "/whole.jsonl";
   const BatchSweepResult one = run_batch_sweep(catalogue, whole);
   std::vector<std::string> files;
   for (int k = 1; k <= 4; ++k) {
@@ -105,21 +116,20 @@ TEST(BatchSweep, ShardsOfAFailingSweepMergeToTheExamplesOfOneRun) {
     files.push_back(s.out);
     ASSERT_EQ(run_batch_sweep(catalogue, s).status, BatchSweepResult::Status::Complete);
   }
-  const SweepReport merged = merge_sweep_files(catalogue, files, dir + "/merged.jsonl", "");
+  const SweepReport merged = merge_sweep_files(catalogue, files, dir + "/merged.jsonl", "", kExitStatus);
   EXPECT_EQ(read_file(dir + "/merged.jsonl"), read_file(whole.out));
   SweepReport a = one.report, b = merged;
   a.seconds = b.seconds = 0;
-  EXPECT_EQ(to_json(a), to_json(b));
+  EXPECT_EQ(to_json(a, 1), to_json(b, 1));
   EXPECT_EQ(a.unexpected.size(), 3u);
 }
 
 TEST(BatchSweep, KilledWorkerStopsTheRunAndResumeCompletes) {
   const std::string dir = fresh_dir("sweep_worker_kill");
-  BatchSweepOptions o;
+  BatchSweepOptions o = batch_options(dir + "/r.jsonl");
   o.sweep = small_sweep();
   o.sweep.n_max = 8;
   o.jobs = 2;
-  o.out = dir + "/r.jsonl";
   // A worker killed before it writes anything: the parent gets the first case from worker 1,
   // then learns how worker 2 ended.
   const std::vector<long> cases = shard_cases(o.sweep, o.shard);
@@ -153,9 +163,8 @@ TEST(BatchSweep, KilledWorkerStopsTheRunAndResumeCompletes) {
 TEST(BatchSweep, DoubleArithmeticGivesTheBytesOfOneRun) {
   const std::string dir = fresh_dir("sweep_double");
   const auto catalogue = dijksman1966::catalogue();
-  BatchSweepOptions one;
+  BatchSweepOptions one = batch_options(dir + "/one.jsonl");
   one.sweep = small_sweep(Arithmetic::Double);
-  one.out = dir + "/one.jsonl";
   ASSERT_EQ(run_batch_sweep(catalogue, one).status, BatchSweepResult::Status::Complete);
   BatchSweepOptions two = one;
   two.jobs = 2;

@@ -44,6 +44,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& s : check.samples)
     for (const auto& c : s.checks)
       if (c.agrees() && !(std::isfinite(c.tolerance) && std::isfinite(c.difference))) std::abort();
-  (void)linkproof::exit_status(check);
   return 0;
 }

@@ -12,6 +12,7 @@
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/core/exact.h"
 #include "io/motion_data.h"
+#include "exit_status.h"
 #include "numerics/data_check.h"
 
 namespace linkproof {
@@ -52,7 +53,7 @@ TEST(DataCheck, PmksMatlabDataAgreesAndReproducesAlphaExactTo25Digits) {
     const DataCheck r = run(c, "matlab");
     EXPECT_EQ(r.differing, 0);
     EXPECT_EQ(r.inconsistent, 0);
-    EXPECT_EQ(exit_status(r), 0);
+    EXPECT_EQ(cli::exit_status(r), 0);
     EXPECT_GE(r.samples.size(), 5u);
     for (const SampleCheck& s : r.samples) {
       const auto& cfg = configuration(json, c.name, s.label);
@@ -86,7 +87,7 @@ TEST(DataCheck, PmksOldAnalyserDiffersExactlyWhereItsValuesAreFarFromTheTruth) {
         differing += chk.agrees() ? 0 : 1;
       }
     }
-    EXPECT_EQ(exit_status(r), 1);
+    EXPECT_EQ(cli::exit_status(r), 1);
   }
   EXPECT_GT(differing, 10);
 }
@@ -160,7 +161,7 @@ TEST(DataCheck, SampleVerdictOrdersDiffersThenInconclusiveAndNeedsAComparedValue
   DataCheck none;
   none.samples.push_back(SampleCheck{});
   none.nothing_compared = 1;
-  EXPECT_EQ(exit_status(none), 1);
+  EXPECT_EQ(cli::exit_status(none), 1);
 }
 
 }  // namespace

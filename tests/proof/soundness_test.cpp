@@ -2,6 +2,7 @@
 // finding of the review, reproduced; each failed before the fix.
 #include <gtest/gtest.h>
 
+#include "exit_status.h"
 #include "io/claim_file.h"
 #include "proof/lift.h"
 #include "proof/prove.h"
@@ -55,7 +56,7 @@ TEST(Soundness, NonLocalClaimGetsProvedForWithTheExactListOfN) {
   EXPECT_EQ(r.proved_n, (std::vector<int>{4, 5}));
   EXPECT_EQ(r.scope.rfind("n = 4, 5 only", 0), 0u) << r.scope;
   EXPECT_TRUE(r.is_as_expected());
-  EXPECT_FALSE(r.is_as_expected(/*strict=*/true));
+  EXPECT_FALSE(cli::is_as_expected(r, /*strict=*/true));
 }
 
 // Finding 2, second half: a claim true at n = 4, 5 but false from n = 6 on; before, it came
@@ -175,7 +176,7 @@ TEST(Soundness, OnlyProofsOfTheWholeRangeAreAsExpectedWhenStrict) {
                                   std::tuple{ProofVerdict::Error, false, false}}) {
     r.verdict = v;
     EXPECT_EQ(r.is_as_expected(), loose) << to_string(v);
-    EXPECT_EQ(r.is_as_expected(true), strict) << to_string(v);
+    EXPECT_EQ(cli::is_as_expected(r, true), strict) << to_string(v);
   }
   r.expected = Expectation::Fails;
   r.verdict = ProofVerdict::Error;

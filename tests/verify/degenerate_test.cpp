@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "exit_status.h"
 #include "dijksman1966.h"
 #include "check/check_polygon.h"
 #include "report/comparison_text.h"
@@ -208,7 +209,7 @@ void expect_exact_condition(const Family& f, const PolygonScene& s) {
 /// claim that does not depend on it holds; no claim expected to hold fails; exit status 0.
 void expect_family_verdicts(const Family& f, const PolygonCheck& check) {
   EXPECT_FALSE(check.dead_centre);
-  EXPECT_EQ(exit_status(check), 0);
+  EXPECT_EQ(cli::exit_status(check.claims), 0);
   for (const auto& [claim, names] : f.undefined) {
     const ClaimOutcome* o = find_claim(check, claim);
     ASSERT_NE(o, nullptr) << claim << " not evaluated";
@@ -296,7 +297,7 @@ TEST(DegenerateGeometry, DeadCentreLeavesSidesNMinus2AndNMinus1UndefinedAndEvery
     EXPECT_EQ(o.verdict, Verdict::Undefined) << summary(o);
     EXPECT_FALSE(o.headline.undefined_quantity.empty()) << summary(o);
   }
-  EXPECT_EQ(exit_status(check), 0);
+  EXPECT_EQ(cli::exit_status(check.claims), 0);
 }
 
 // ---- 2. Q_j at infinity ----------------------------------------------------------------------
@@ -474,7 +475,7 @@ TEST(DegenerateGeometry, EveryBundledDegenerateSceneParsesAndIsCovered) {
     EXPECT_EQ(s.source, e.path().string());
     EXPECT_TRUE(s.polygon.n() == 5 || s.polygon.n() == 6) << stem;
     EXPECT_EQ(polygon_input_problem(s.polygon), "") << stem;
-    EXPECT_EQ(exit_status(run(s)), 0) << stem;
+    EXPECT_EQ(cli::exit_status(run(s).claims), 0) << stem;
   }
   EXPECT_EQ(found, expected);
 }
@@ -489,7 +490,7 @@ TEST(DegenerateGeometry, FloatingPointNeverFailsATrueClaimOnTheDegenerateScenes)
     for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble, Arithmetic::Mp30, Arithmetic::Mp1000}) {
       SCOPED_TRACE(std::string(to_string(a)));
       const PolygonCheck check = run(s, a);
-      EXPECT_EQ(exit_status(check), 0);
+      EXPECT_EQ(cli::exit_status(check.claims), 0);
       for (const auto& o : check.claims) {
         EXPECT_NE(o.verdict, Verdict::Error) << summary(o);
         EXPECT_FALSE(o.is_unexpected_failure()) << summary(o);
@@ -513,7 +514,7 @@ TEST(DegenerateGeometry, DeadCentreIsUndefinedInFloatingPointToo) {
     const PolygonCheck check = run(s, a);
     ASSERT_TRUE(check.dead_centre);
     ASSERT_FALSE(check.claims.empty());
-    EXPECT_EQ(exit_status(check), 0);
+    EXPECT_EQ(cli::exit_status(check.claims), 0);
     for (int side : {n - 2, n - 1}) {
       EXPECT_FALSE(check.omega[side - 1].has_value());
       EXPECT_FALSE(check.omega_dot[side - 1].has_value());

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "exit_status.h"
 #include "dijksman1966.h"
 #include "check/check_polygon.h"
 #include "report/comparison_text.h"
@@ -33,7 +34,7 @@ TEST(Dijksman1966, EveryTrueClaimHoldsExactlyOnWorkedExamples) {
         EXPECT_EQ(c.verdict, Verdict::Holds) << c.info.id << " n=" << check.n;
       }
     }
-    EXPECT_EQ(exit_status(check), 0);
+    EXPECT_EQ(cli::exit_status(check.claims), 0);
   }
 }
 
@@ -214,7 +215,7 @@ TEST(Dijksman1966Mp, PentagonVerdictsInMp30AndMp1000AreTheExactOnes) {
     }
     EXPECT_EQ(true_claims_holding, 17);
     EXPECT_EQ(errata_failing, 12);
-    EXPECT_EQ(exit_status(check), 0);
+    EXPECT_EQ(cli::exit_status(check.claims), 0);
   }
 }
 

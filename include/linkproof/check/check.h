@@ -35,9 +35,10 @@ struct ClaimOutcome {
   std::string error;  ///< set when the evaluation itself threw (verdict Error)
 
   /// True if this outcome is what the claim is expected to do, or says nothing against it
-  /// (undefined/inconclusive; with `strict` these are not as expected for a true claim). An
-  /// erratum reading that happens to hold here is not a failure. Error never is as expected.
-  bool is_as_expected(bool strict = false) const;
+  /// (undefined or inconclusive). An erratum reading that happens to hold here is not a failure.
+  /// Error never is as expected. (The `--strict` policy of the linkproof program, which also
+  /// counts an undefined or inconclusive true claim against it, is described in docs/check.md.)
+  bool is_as_expected() const;
   /// Verdict Undefined, naming the quantity that does not exist and why.
   void mark_undefined(std::string quantity, std::string reason) {
     verdict = Verdict::Undefined;
@@ -70,16 +71,6 @@ struct PolygonCheck {
   ResultNumber determinant;
   std::vector<ClaimOutcome> claims;
   std::vector<std::string> not_applicable;  ///< ids of claims that do not apply to this n
-  /// --strict: undefined or inconclusive on a true claim is not as expected (exit 1).
-  bool strict = false;
 };
-
-/// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
-/// claim's evaluation errored.
-int exit_status(const PolygonCheck& check);
-/// The CLI's exit code of a list of outcomes: 3 if any verdict is Error, else 1 if one is not as
-/// expected (a true claim fails; with `strict` also undefined/inconclusive), else 0. Shared by
-/// polygon and mechanism checks.
-int exit_status(const std::vector<ClaimOutcome>& outcomes, bool strict = false);
 
 }  // namespace linkproof

@@ -13,8 +13,12 @@
 //                              rates from the solution, gives the same motion (docs/conventions.md §C: the
 //                              results do not depend on which link drives).
 // Paper-specific claims come from catalogues (the program's own, selected by the scene's
-// `catalogue` field). Claims are evaluated in exact arithmetic; --arith double solves the
-// rigid-body route in IEEE double and reports the values with the system's condition number.
+// `catalogue` field). Claims are evaluated in exact arithmetic. In a floating arithmetic (double,
+// long double, mp30, ...) the rigid-body route is solved again in that arithmetic with running
+// error bounds (Tracked<F>, core/tracked.h: midpoint-radius arithmetic): every value is reported
+// as its midpoint with a rigorous bound on its distance to the exact value, derived from the
+// rounding of the scene's rationals and of every operation (never measured against the exact
+// solve), beside the system's condition number.
 #pragma once
 
 #include <optional>
@@ -46,19 +50,26 @@ struct MechanismCheck {
   /// 1e200 in double): the reason; the motion shown is then the exact one.
   std::string arithmetic_note;
   std::vector<std::string> link_names;
-  /// Per link (relative to the ground), per joint, per tracer point: exact, or the values of
+  /// Per link (relative to the ground), per joint, per tracer point: exact, or the midpoints of
   /// the floating-point route in its own type.
   std::vector<ResultNumber> omega, omega_dot;
+  /// Beside every value, its bound (the `_bound` members, same index): nullopt for an exact
+  /// value; for a midpoint of the floating route a rigorous bound, |exact - midpoint| <= bound
+  /// (core/tracked.h; unbounded, i.e. infinite, when the solve divided by a pivot whose bound
+  /// reaches zero).
+  std::vector<std::optional<ResultRadius>> omega_bound, omega_dot_bound;
   struct PointMotion {
     std::string name;
     ResultNumber v[2], a[2];
     std::optional<ResultNumber> slide, slide_dot;  ///< prismatic joints only
+    std::optional<ResultRadius> v_bound[2], a_bound[2], slide_bound, slide_dot_bound;
   };
   std::vector<PointMotion> joints, points;
   /// Every pair of links i < k (in link order): omega_ik = omega_i - omega_k, and omega-dot_ik.
   struct Relative {
     std::string i, k;
     ResultNumber omega, omega_dot;
+    std::optional<ResultRadius> omega_bound, omega_dot_bound;
   };
   std::vector<Relative> relative;
   std::vector<ReportTable> tables;
@@ -79,17 +90,11 @@ struct MechanismCheck {
   std::optional<SceneAsk> ask;
   std::vector<std::string> computed_links;
   int all_links = 0, all_loops = 0;
-  /// --strict: undefined or inconclusive on a true claim is not as expected (exit 1).
-  bool strict = false;
 };
 
 /// Solves the scene and runs the built-in claims (in arithmetic `a`, as MechanismCheck describes).
 /// The paper catalogues of `linkproof check` are the program's, not the library's. Throws
 /// InputError for a scene that cannot be solved (locked, wrong number of inputs, ...).
 MechanismCheck check_mechanism(const MechanismScene& scene, Arithmetic a);
-
-/// 0 every claim as expected; 1 a claim not as expected (is_as_expected(check.strict)); 3 a
-/// claim errored.
-int exit_status(const MechanismCheck& check);
 
 }  // namespace linkproof

@@ -20,6 +20,7 @@
 #include "batch/batch_sweep.h"
 #include "batch/merge.h"
 #include "check/sweep_tally.h"
+#include "exit_status.h"
 #include "report/json_report.h"
 #include "report/text_report.h"
 #include "sweep_args.h"
@@ -37,7 +38,7 @@ std::string shard_lines(const std::vector<Claim>& catalogue, const SweepOptions&
     tally.add(c);
     lines += sweep_case_line(c, o.arithmetic) + "\n";
   }
-  return lines + sweep_summary_line(tally.report(), shard) + "\n";
+  return lines + sweep_summary_line(tally.report(), shard, exit_status(tally.report())) + "\n";
 }
 
 /// Gathers every rank's text on rank 0 (empty elsewhere), one string per rank.
@@ -86,15 +87,18 @@ int run(int argc, char** argv, int rank, int size) {
   std::vector<std::istringstream> in;
   for (const auto& p : parts) in.emplace_back(p);
   try {
-    const SweepReport r = merge_shard_lines(
-        catalogue, o, size,
-        [&](int s) -> std::optional<std::string> {
-          std::string line;
-          if (std::getline(in[static_cast<size_t>(s)], line)) return line;
-          return std::nullopt;
-        },
-        [](int s) { return fmt::format("<rank {}>", s); }, a.out, a.scenes);
-    return print_report(std::cout, r, a.json, r.exit_status());
+    const SweepReport r = naming_options(kSweepOptionNames, [&] {
+      return merge_shard_lines(
+          catalogue, o, size,
+          [&](int s) -> std::optional<std::string> {
+            std::string line;
+            if (std::getline(in[static_cast<size_t>(s)], line)) return line;
+            return std::nullopt;
+          },
+          [](int s) { return fmt::format("<rank {}>", s); }, a.out, a.scenes,
+          [](const SweepReport& s) { return exit_status(s); });
+    });
+    return print_report(std::cout, r, a.json, exit_status(r));
   } catch (const InputError& e) {
     fmt::print(std::cerr, "linkproof_mpi: bad input: {}\n", e.what());
     return 2;
