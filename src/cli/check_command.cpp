@@ -26,6 +26,7 @@ struct CheckArgs {
   std::optional<std::string> arith;  // default: the scene's ask, else exact
   bool json = false;
   bool no_terms = false;
+  std::optional<int> digits;  // significant digits of the decimals beside exact values (text only)
   bool strict = false;
 };
 
@@ -48,7 +49,7 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
       out << json_text(j) << "\n";
     } else {
       write_scene_placement_text(out, scene);
-      write_text(out, check, status);
+      write_text(out, check, status, a.digits.value_or(kReadableDigits));
     }
     return status.exit_status;
   }
@@ -65,7 +66,7 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
     out << j.dump(2) << "\n";
   } else {
     write_scene_placement_text(out, scene);
-    write_text(out, check, status);
+    write_text(out, check, status, a.digits.value_or(kReadableDigits));
     write_curvature_text(out, *second.analysis, second.link_names);
   }
   return status.exit_status;
@@ -73,6 +74,9 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
 
 int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   if (a.arith) arithmetic_or_throw(*a.arith);  // a bad option is named before the file is read
+  if (a.digits && a.json)
+    throw InputError("<command line>", "--digits",
+                     "applies to the text report (JSON keeps every exact value as p/q): drop --json or --digits");
   // The file is read once (a pipe such as /dev/stdin can be read only once) and its text parsed.
   const std::string text = read_scene_text(a.scene);
   if (is_mechanism_scene_text(text)) return run_mechanism_check(a, text, out);
@@ -89,7 +93,7 @@ int run_check(const CheckArgs& a, std::ostream& out, std::ostream&) {
   if (a.json)
     out << json_text(to_json(check, status)) << "\n";
   else
-    write_text(out, check, status, !a.no_terms);
+    write_text(out, check, status, !a.no_terms, a.digits.value_or(kReadableDigits));
   return status.exit_status;
 }
 
@@ -104,6 +108,9 @@ void add_check_command(CLI::App& app, Action& action) {
                 "running error bound that draws the tolerance: double, long-double, mp30, mp50, mp100, mp1000 "
                 "(CLN long floats of 128, 192, 384, 3392 bits); default: the scene's `ask: [arithmetic: ...]`, else exact");
   c->add_flag("--json", a.json, "print JSON (the contract: docs/check.md, docs/mechanisms.md)");
+  c->add_option("--digits", a.digits,
+                "significant digits of the decimal shown beside each exact value in the text report (default 10)")
+      ->check(int_range_validator(1, 100));
   c->add_flag("--no-terms", a.no_terms, "omit the term-by-term tables from the text report (polygon scenes; refused on a mechanism scene)");
   c->add_flag("--strict", a.strict,
               "undefined or inconclusive on a true claim is not as expected (exit 1): for CI");

@@ -38,9 +38,10 @@ json rates_json(const ResultNumber& omega, const ResultNumber& omega_dot, const 
   return j;
 }
 
-// A value as text, followed by its bound when it has one: "-0.75000000000000011 +- 2.22e-16".
-std::string bounded_text(const ResultNumber& x, const std::optional<ResultRadius>& bound) {
-  return bound ? number_text(x) + " +- " + radius_short_text(*bound) : number_text(x);
+// A value as text, followed by its bound when it has one: "-0.75000000000000011 +- 2.22e-16"; an
+// exact value with its decimal beside it: "-3/4 = -0.75" (report/number_text.h).
+std::string bounded_text(const ResultNumber& x, const std::optional<ResultRadius>& bound, int digits) {
+  return bound ? number_text(x) + " +- " + radius_short_text(*bound) : readable_number(x, digits);
 }
 
 }  // namespace
@@ -133,7 +134,7 @@ json to_json(const MechanismCheck& c, const ClaimsStatus& status) {
   return j;
 }
 
-void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& status) {
+void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& status, int digits) {
   fmt::print(out, "scene {} ({} arithmetic)\n", c.scene, to_string(c.arithmetic));
   fmt::print(out, "mobility {} (Gruebler {}), {} loops, {} unknowns, rank {}, condition {:.3g}, closure residual {}\n\n",
              c.mobility, c.grubler, c.loops, c.unknowns, c.rank, c.condition, format_rational(c.closure_residual));
@@ -149,20 +150,20 @@ void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& 
   if (!c.ask || !c.link_names.empty()) {
     fmt::print(out, "{:<10} {:>{}} {:>{}}\n", "link", "omega", rate_width, "omega_dot", rate_width);
     for (size_t l = 0; l < c.link_names.size(); ++l)
-      fmt::print(out, "{:<10} {:>{}} {:>{}}\n", c.link_names[l], bounded_text(c.omega[l], c.omega_bound[l]), rate_width,
-                 bounded_text(c.omega_dot[l], c.omega_dot_bound[l]), rate_width);
+      fmt::print(out, "{:<10} {:>{}} {:>{}}\n", c.link_names[l], bounded_text(c.omega[l], c.omega_bound[l], digits), rate_width,
+                 bounded_text(c.omega_dot[l], c.omega_dot_bound[l], digits), rate_width);
   }
   if (!c.ask || !c.joints.empty() || !c.points.empty())
     fmt::print(out, "\n{:<10} {:>{}} {:>{}}\n", "joint", "v", point_width, "a", point_width);
   for (const auto* list : {&c.joints, &c.points})
     for (const auto& p : *list)
       fmt::print(out, "{:<10} {:>{}} {:>{}}{}\n", p.name,
-                 fmt::format("({}, {})", bounded_text(p.v[0], p.v_bound[0]), bounded_text(p.v[1], p.v_bound[1])),
+                 fmt::format("({}, {})", bounded_text(p.v[0], p.v_bound[0], digits), bounded_text(p.v[1], p.v_bound[1], digits)),
                  point_width,
-                 fmt::format("({}, {})", bounded_text(p.a[0], p.a_bound[0]), bounded_text(p.a[1], p.a_bound[1])),
+                 fmt::format("({}, {})", bounded_text(p.a[0], p.a_bound[0], digits), bounded_text(p.a[1], p.a_bound[1], digits)),
                  point_width,
-                 p.slide ? fmt::format("   sliding v {}, a {}", bounded_text(*p.slide, p.slide_bound),
-                                       bounded_text(*p.slide_dot, p.slide_dot_bound))
+                 p.slide ? fmt::format("   sliding v {}, a {}", bounded_text(*p.slide, p.slide_bound, digits),
+                                       bounded_text(*p.slide_dot, p.slide_dot_bound, digits))
                          : "");
   for (const auto& t : c.tables) {
     fmt::print(out, "\n{}\n", t.title);

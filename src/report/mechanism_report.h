@@ -27,6 +27,7 @@
 
 #include "mechanism/mechanism_catalogue.h"
 #include "report/claims_status.h"
+#include "report/number_text.h"
 
 namespace linkproof {
 
@@ -44,6 +45,7 @@ void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claim
 void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
                          const std::vector<std::string>& not_applicable, const ClaimsStatus& status);
 /// In a floating arithmetic every value is followed by its bound ("value +- bound").
-void write_text(std::ostream& out, const MechanismCheck& check, const ClaimsStatus& status);
+/// Exact values are shown with their decimal to `digits` significant digits beside them.
+void write_text(std::ostream& out, const MechanismCheck& check, const ClaimsStatus& status, int digits = kReadableDigits);
 
 }  // namespace linkproof

@@ -23,7 +23,14 @@ std::string readable(const std::string& s) {
   return s.substr(0, 22) + "..." + s.substr(mantissa);
 }
 
-std::string value_or_undefined(const std::optional<ResultNumber>& v) { return v ? readable(number_text(*v)) : "undefined"; }
+/// An exact value with its decimal beside it (report/number_text.h); a float as `readable` shows it.
+std::string value_text(const ResultNumber& v, int digits) {
+  return is_exact(v) ? readable_number(v, digits) : readable(number_text(v));
+}
+
+std::string value_or_undefined(const std::optional<ResultNumber>& v, int digits) {
+  return v ? value_text(*v, digits) : "undefined";
+}
 
 std::string optional_text(const std::optional<ResultNumber>& v) { return v ? number_text(*v) : ""; }
 
@@ -52,7 +59,7 @@ std::string evidence(const ComparisonOutcome& c) { return evidence(to_json(c)); 
 
 }  // namespace
 
-void write_text(std::ostream& out, const PolygonCheck& c, const ClaimsStatus& status, bool show_terms) {
+void write_text(std::ostream& out, const PolygonCheck& c, const ClaimsStatus& status, bool show_terms, int digits) {
   LINKPROOF_ASSERT(status.as_expected.size() == c.claims.size(), "one status per claim");
   fmt::print(out, "linkproof check: {} (n = {}, {} arithmetic)\n", c.scene, c.n, to_string(c.arithmetic));
   if (c.dead_centre) {
@@ -64,15 +71,15 @@ void write_text(std::ostream& out, const PolygonCheck& c, const ClaimsStatus& st
     if (!c.ask->rates.empty()) fmt::print(out, "asked rates (loop closure, solved exactly), relative to side {}:\n", c.n);
     for (const AskedRate& r : c.ask->rates) {
       const size_t j = static_cast<size_t>(std::stoi(r.subject.name) - 1);
-      fmt::print(out, "  {:<16} = {}\n", r.text(), value_or_undefined((r.dot ? c.omega_dot : c.omega)[j]));
+      fmt::print(out, "  {:<16} = {}\n", r.text(), value_or_undefined((r.dot ? c.omega_dot : c.omega)[j], digits));
     }
   } else {
     fmt::print(out, "ground truth (loop closure, solved exactly), relative to side {}:\n", c.n);
     for (int j = 0; j < c.n; ++j)
-      fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j]),
-                 value_or_undefined(c.omega_dot[j]));
+      fmt::print(out, "  side {:>2}: omega = {:<24} omega-dot = {}\n", j + 1, value_or_undefined(c.omega[j], digits),
+                 value_or_undefined(c.omega_dot[j], digits));
   }
-  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, readable(number_text(c.determinant)));
+  fmt::print(out, "D = r_{} x r_{} = {}\n\n", c.n - 2, c.n - 1, value_text(c.determinant, digits));
 
   if (!c.claims.empty() || !c.ask) fmt::print(out, "{:<34} {:<9} {:<13} {}\n", "claim", "expected", "verdict", "evidence");
   int unexpected = 0, not_as_expected = 0, erratum_failed = 0, erratum_total = 0, true_held = 0, true_total = 0;
