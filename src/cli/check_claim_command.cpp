@@ -1,5 +1,12 @@
 // linkproof check-claim FILE.yaml [--n A..B] [--count N] [--seed S] [--scene SCENE [--arith A]] [--json]
+// linkproof check-claim FILE.yaml --scene MECHANISM_SCENE [--json]
+// linkproof check-claim FILE.yaml --topology MECHANISM_SCENE [--count K] [--seed S] [--json]
 // linkproof check-claim --vocabulary
+//
+// Mechanism claims (docs/claims.md, "Mechanism claims"): with a mechanism scene, FILE is read in
+// the mechanism vocabulary; --scene judges every claim on the scene's exact solution, --topology
+// on K random exact configurations of its topology (holds_on_samples, not a proof, or disproved
+// with a shrunk counterexample scene).
 //
 // A user's claims: proved for every n (symbolic, with the exceptional set), proved for the
 // given n, holding on every random exact instance (no proof found), or failing with an exact
@@ -10,6 +17,12 @@
 #include "cli.h"
 #include "command.h"
 #include "io/claim_file.h"
+#include "claims/mechanism_vocabulary.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "mechanism/mechanism_data_claim.h"
+#include "proof/mechanism_sampling.h"
+#include "report/mechanism_claim_report.h"
+#include "report/mechanism_report.h"
 #include "claims/vocabulary.h"
 #include "check/random_polygon.h"
 #include "linkproof/io/scene.h"
@@ -28,6 +41,8 @@ struct CheckClaimArgs {
   int count = 20;
   std::uint64_t seed = 1;
   std::string scene;
+  std::string topology;
+  bool count_given = false;
   std::string arith = "exact";
   double ladder_seconds = 1.0;
   bool json = false;
@@ -38,6 +53,64 @@ struct CheckClaimArgs {
 void print_vocabulary(std::ostream& out) {
   for (const Word& w : vocabulary())
     fmt::print(out, "{:24} {}\n", w.name + (w.arity == 0 ? "" : w.arity == 1 ? "[.]" : "(a, b)"), w.meaning);
+  fmt::print(out, "\nmechanism claims (with --scene or --topology MECHANISM_SCENE; L, M links, P a joint or point, J a "
+                  "prismatic joint; names bare or quoted):\n");
+  for (const MechanismWord& w : mechanism_vocabulary()) fmt::print(out, "{:24} {}\n", w.signature, w.meaning);
+}
+
+// The claim file read for a mechanism scene and bound to its names. A polygon claim file is
+// named as such (the scene is the other half of the mismatch).
+std::vector<MechanismDataClaim> mechanism_claims_for(const std::string& file, const MechanismScene& scene,
+                                                     const std::string& scene_path) {
+  MechanismClaimFile claims;
+  try {
+    claims = load_mechanism_claim_file(file);
+  } catch (const InputError& e) {
+    bool polygon_file = false;
+    try {
+      load_claim_file(file);
+      polygon_file = true;
+    } catch (const InputError&) {
+    }
+    if (!polygon_file) throw;
+    throw InputError(scene_path, "mechanism",
+                     "this is a mechanism scene (top-level `mechanism`), and " + file +
+                         " is a claim file about polygons (" + e.source() + ": " + e.problem() +
+                         "); mechanism claims use omega(L), pos(P), vel(P, L), ... (check-claim --vocabulary)");
+  }
+  for (MechanismDataClaim& c : claims.claims) bind_mechanism_claim(c, scene);
+  return std::move(claims.claims);
+}
+
+int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path, bool topology, std::ostream& out) {
+  if (a.arith != "exact")
+    throw InputError("<command line>", "--arith", "mechanism claims are evaluated in exact arithmetic only");
+  if (!a.n_range.empty()) throw InputError("<command line>", "--n", "applies to polygon claims, not to a mechanism scene");
+  const MechanismScene scene = load_mechanism_scene(scene_path);
+  const std::vector<MechanismDataClaim> claims = mechanism_claims_for(a.file, scene, scene_path);
+  if (!topology) {
+    if (a.count_given) throw InputError("<command line>", "--count", "applies to --topology, not to --scene");
+    std::vector<MechanismClaim> run;
+    for (const MechanismDataClaim& c : claims) run.push_back(to_mechanism_claim(c));
+    const MechanismCheck check = check_mechanism_claims(scene, run);
+    const ClaimsStatus status = claims_status(check.claims, a.strict);
+    if (a.json)
+      out << json_text(to_json(check, status)) << "\n";
+    else
+      write_text(out, check, status);
+    return status.exit_status;
+  }
+  if (a.count < 1 || a.count > 100000) throw InputError("<command line>", "--count", "must be between 1 and 100000");
+  TopologySampling o;
+  o.count = a.count;
+  o.seed = a.seed;
+  const TopologySampleRun run = sample_topology(scene, claims, o);
+  const ClaimsStatus status = sampling_status(run, a.strict);
+  if (a.json)
+    out << json_text(to_json(run, status)) << "\n";
+  else
+    write_text(out, run, status);
+  return status.exit_status;
 }
 
 /// No symbolic form: the claim on `count` random exact polygons per n, judged in `arith`. Only
@@ -98,6 +171,11 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
     return kAsExpected;
   }
   if (a.file.empty()) throw InputError("<command line>", "FILE", "a claim file is required (or --vocabulary)");
+  if (!a.topology.empty()) {
+    if (!a.scene.empty()) throw InputError("<command line>", "--topology", "give --scene or --topology, not both");
+    return run_mechanism_claims(a, a.topology, true, out);
+  }
+  if (!a.scene.empty() && is_mechanism_scene_text(read_scene_text(a.scene))) return run_mechanism_claims(a, a.scene, false, out);
   // Proofs, the counterexample search and its shrinking are exact whatever --arith says; it sets
   // the arithmetic of the --scene check and of the random instances judged when no proof exists.
   const Arithmetic arith = arithmetic_or_throw(a.arith);
@@ -150,10 +228,18 @@ void add_check_claim_command(CLI::App& app, Action& action) {
   auto& a = bind_action<CheckClaimArgs>(c, action, run_check_claim);
   c->add_option("file", a.file, "claim file (YAML)");
   c->add_option("--n", a.n_range, "sides: N (prove for this n) or A..B (default: every n, searching 4..8)");
-  c->add_option("--count", a.count, "random exact instances per n when no proof is found (default 20)");
+  c->add_option("--count", a.count,
+                "random exact instances per n when no proof is found; with --topology, configurations per claim "
+                "(default 20)")
+      ->each([&a](const std::string&) { a.count_given = true; });
   c->add_option("--seed", a.seed, "seed of the counterexample search and the samples (default 1)")
       ->check(seed_validator());
-  c->add_option("--scene", a.scene, "check the claims on this scene only (in the arithmetic of --arith)");
+  c->add_option("--scene", a.scene,
+                "check the claims on this scene only (in the arithmetic of --arith); a mechanism scene takes mechanism "
+                "claims (exact)");
+  c->add_option("--topology", a.topology,
+                "mechanism claims on --count random exact configurations of this mechanism scene's topology "
+                "(holds_on_samples, not a proof, or disproved with a shrunk counterexample scene)");
   c->add_option("--arith", a.arith,
                 "arithmetic of the --scene check and of the random instances judged when no proof is found: "
                 "exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help); proofs and "

@@ -84,4 +84,15 @@ ClaimsStatus proofs_status(const std::vector<ProofResult>& results, bool strict)
 
 int exit_status(const std::vector<ProofResult>& results, bool strict) { return proofs_status(results, strict).exit_status; }
 
+ClaimsStatus sampling_status(const TopologySampleRun& run, bool strict) {
+  ClaimsStatus s;
+  s.strict = strict;
+  for (const SampleResult& r : run.claims) {
+    const bool holds_only_on_samples = r.info.expected == Expectation::Holds;
+    s.as_expected.push_back(r.is_as_expected() && !(strict && holds_only_on_samples));
+    if (!s.as_expected.back()) s.exit_status = kClaimFailed;
+  }
+  return s;
+}
+
 }  // namespace linkproof::cli

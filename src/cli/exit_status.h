@@ -18,6 +18,7 @@
 #include "count/count_claim.h"
 #include "linkproof/check/check.h"
 #include "numerics/data_check.h"
+#include "proof/mechanism_sampling.h"
 #include "proof/prove.h"
 #include "report/claims_status.h"
 
@@ -61,5 +62,10 @@ bool is_as_expected(const ProofResult& result, bool strict);
 /// if one is not as expected, else 0.
 ClaimsStatus proofs_status(const std::vector<ProofResult>& results, bool strict = false);
 int exit_status(const std::vector<ProofResult>& results, bool strict = false);
+
+/// Claims on random configurations of a topology: a true claim holding on the samples is as
+/// expected, except with `strict` (samples are no proof); a claim expected to fail must be
+/// disproved. Exit 1 if one is not as expected.
+ClaimsStatus sampling_status(const TopologySampleRun& run, bool strict = false);
 
 }  // namespace linkproof::cli

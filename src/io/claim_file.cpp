@@ -70,6 +70,32 @@ class ClaimFileReader {
   ClaimFileReader(const std::string& text, const std::string& source) : text_(text), source_(source) {}
 
   ClaimFile read(const YAML::Node& doc) {
+    ClaimFile f;
+    f.source = source_;
+    read_list(doc, [&](const YAML::Node& n, const std::string& where, const std::string& paper,
+                       const std::string& prefix) {
+      f.claims.push_back(read_claim(n, where, paper, prefix));
+      return f.claims.back().info.id;
+    });
+    return f;
+  }
+
+  MechanismClaimFile read_mechanism(const YAML::Node& doc) {
+    MechanismClaimFile f;
+    f.source = source_;
+    read_list(doc, [&](const YAML::Node& n, const std::string& where, const std::string& paper,
+                       const std::string& prefix) {
+      f.claims.push_back(read_mechanism_claim(n, where, paper, prefix));
+      return f.claims.back().info.id;
+    });
+    return f;
+  }
+
+ private:
+  // The top-level map and its list of claims; `read_one(node, "claims[i]", paper, prefix)`
+  // reads one claim and returns its id (ids must be unique).
+  template <class ReadOne>
+  void read_list(const YAML::Node& doc, ReadOne read_one) const {
     if (!doc.IsMap()) fail("", "expected a map with the field `claims`");
     known_keys(doc, "", {"paper", "id_prefix", "claims"});
     const std::string paper = optional_string(doc, "paper", "");
@@ -77,18 +103,13 @@ class ClaimFileReader {
     const YAML::Node list = doc["claims"];
     if (!list) fail("claims", "missing: the list of claims");
     if (!list.IsSequence() || list.size() == 0) fail("claims", "expected a non-empty list of claims");
-    ClaimFile f;
-    f.source = source_;
     std::set<std::string> ids;
     for (size_t i = 0; i < list.size(); ++i) {
-      DataClaim c = read_claim(list[i], "claims[" + std::to_string(i) + "]", paper, prefix);
-      if (!ids.insert(c.info.id).second) fail("claims[" + std::to_string(i) + "].id", "repeated id '" + c.info.id + "'");
-      f.claims.push_back(std::move(c));
+      const std::string id = read_one(list[i], "claims[" + std::to_string(i) + "]", paper, prefix);
+      if (!ids.insert(id).second) fail("claims[" + std::to_string(i) + "].id", "repeated id '" + id + "'");
     }
-    return f;
   }
 
- private:
   [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
     throw InputError(source_, field, problem);
   }
@@ -168,29 +189,63 @@ class ClaimFileReader {
     return ClaimExpression::parse(n.Scalar(), ctx, positions_in_file(text_, n.Mark(), n.Scalar()));
   }
 
+  // id, source, statement, expected and note: the fields every claim has.
+  ClaimInfo read_info(const YAML::Node& n, const std::string& where, const std::string& paper,
+                      const std::string& prefix) const {
+    ClaimInfo info;
+    const std::string id = required_string(n, "id", where);
+    for (char ch : id)
+      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '_' && ch != '-')
+        fail(where + ".id", "'" + id + "' may only contain letters, digits, '.', '_' and '-'");
+    info.id = prefix + id;
+    const std::string src = required_string(n, "source", where);
+    info.source = paper.empty() ? src : paper + ", " + src;
+    info.statement = required_string(n, "statement", where);
+    if (const YAML::Node e = n["expected"]) {
+      const std::string v = e.IsScalar() ? e.Scalar() : "";
+      if (v == "holds") info.expected = Expectation::Holds;
+      else if (v == "fails") info.expected = Expectation::Fails;
+      else fail(where + ".expected", "expected 'holds' or 'fails', got '" + v + "'");
+    }
+    if (const YAML::Node e = n["note"]) {
+      if (!e.IsScalar()) fail(where + ".note", "expected a string");
+      info.note = yaml_io::clean_text(e.Scalar());
+    }
+    return info;
+  }
+
+  MechanismExpression read_mechanism_expression(const YAML::Node& map, const std::string& key,
+                                                const std::string& where, const std::string& id) const {
+    const YAML::Node n = map[key];
+    const std::string field = where + "." + key;
+    if (!n) fail(field, "missing");
+    if (!n.IsScalar() || n.Scalar().empty()) fail(field, "expected an expression (a string)");
+    ExpressionContext ctx{source_, field + " (claim '" + id + "')", false};
+    return MechanismExpression::parse(n.Scalar(), ctx, positions_in_file(text_, n.Mark(), n.Scalar()));
+  }
+
+  MechanismDataClaim read_mechanism_claim(const YAML::Node& n, const std::string& where, const std::string& paper,
+                                          const std::string& prefix) const {
+    if (!n.IsMap()) fail(where, "expected a map (id, source, statement, lhs, rhs, ...)");
+    known_keys(n, where, {"id", "source", "statement", "expected", "note", "lhs", "rhs"});
+    MechanismDataClaim c;
+    c.info = read_info(n, where, paper, prefix);
+    c.field = where;
+    c.lhs = read_mechanism_expression(n, "lhs", where, c.info.id);
+    c.rhs = read_mechanism_expression(n, "rhs", where, c.info.id);
+    if (c.lhs.kind() != c.rhs.kind())
+      fail(where + " (claim '" + c.info.id + "')",
+           "lhs is " + describe(c.lhs.kind()) + " and rhs " + describe(c.rhs.kind()) +
+               ": a claim compares two numbers or two vectors");
+    return c;
+  }
+
   DataClaim read_claim(const YAML::Node& n, const std::string& where, const std::string& paper,
                        const std::string& prefix) const {
     if (!n.IsMap()) fail(where, "expected a map (id, source, statement, lhs, rhs, ...)");
     known_keys(n, where, {"id", "source", "statement", "expected", "note", "n", "for_each", "reading", "lhs", "rhs"});
     DataClaim c;
-    const std::string id = required_string(n, "id", where);
-    for (char ch : id)
-      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '_' && ch != '-')
-        fail(where + ".id", "'" + id + "' may only contain letters, digits, '.', '_' and '-'");
-    c.info.id = prefix + id;
-    const std::string src = required_string(n, "source", where);
-    c.info.source = paper.empty() ? src : paper + ", " + src;
-    c.info.statement = required_string(n, "statement", where);
-    if (const YAML::Node e = n["expected"]) {
-      const std::string v = e.IsScalar() ? e.Scalar() : "";
-      if (v == "holds") c.info.expected = Expectation::Holds;
-      else if (v == "fails") c.info.expected = Expectation::Fails;
-      else fail(where + ".expected", "expected 'holds' or 'fails', got '" + v + "'");
-    }
-    if (const YAML::Node e = n["note"]) {
-      if (!e.IsScalar()) fail(where + ".note", "expected a string");
-      c.info.note = yaml_io::clean_text(e.Scalar());
-    }
+    c.info = read_info(n, where, paper, prefix);
     read_range(n["n"], where + ".n", c.info);
     if (const YAML::Node e = n["for_each"]) {
       if (!e.IsScalar() || e.Scalar() != "j") fail(where + ".for_each", "expected 'j' (one statement per input j)");
@@ -209,16 +264,36 @@ class ClaimFileReader {
 
 }  // namespace
 
-ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& source) {
+namespace {
+
+template <class Read>
+auto read_claim_document(const std::string& yaml_text, const std::string& source, Read read) {
   const YAML::Node doc =
       yaml_io::parse_single_document(yaml_text, source, "empty document: expected a map with the field `claims`");
   std::size_t visits = 0;
   refuse_repeated_keys(doc, source, "", visits);
   try {
-    return ClaimFileReader(yaml_text, source).read(doc);
+    return read(ClaimFileReader(yaml_text, source), doc);
   } catch (const YAML::Exception& e) {
     throw InputError(source, "", std::string("cannot read the YAML: ") + e.what());
   }
+}
+
+}  // namespace
+
+ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& source) {
+  return read_claim_document(yaml_text, source, [](ClaimFileReader r, const YAML::Node& doc) { return r.read(doc); });
+}
+
+MechanismClaimFile parse_mechanism_claim_file(const std::string& yaml_text, const std::string& source) {
+  return read_claim_document(yaml_text, source,
+                             [](ClaimFileReader r, const YAML::Node& doc) { return r.read_mechanism(doc); });
+}
+
+MechanismClaimFile load_mechanism_claim_file(const std::string& path) {
+  MechanismClaimFile file = parse_mechanism_claim_file(yaml_io::read_scene_file(path), path);
+  for (MechanismDataClaim& c : file.claims) c.info.file = path;
+  return file;
 }
 
 ClaimFile parse_user_claim_file(const std::string& yaml_text, const std::string& path) {

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "claims/data_claim.h"
+#include "claims/mechanism_claim.h"
 
 namespace linkproof {
 
@@ -41,6 +42,20 @@ ClaimFile parse_claim_file(const std::string& yaml_text, const std::string& sour
 ClaimFile parse_user_claim_file(const std::string& yaml_text, const std::string& path);
 /// Reads (with the input size cap) and parses a user's claim file.
 ClaimFile load_claim_file(const std::string& path);
+
+/// A claim file about a mechanism (docs/claims.md, "Mechanism claims"): the same schema with the
+/// fields id, source, statement, expected, note, lhs and rhs (no n, for_each or reading), the
+/// sides in the mechanism vocabulary (claims/mechanism_vocabulary.h), both of one kind (two
+/// numbers or two vectors). Errors name the file, the claim and, inside an expression, its
+/// line and column. Names are bound to a scene later (mechanism/mechanism_data_claim.h).
+struct MechanismClaimFile {
+  std::string source;
+  std::vector<MechanismDataClaim> claims;
+};
+
+MechanismClaimFile parse_mechanism_claim_file(const std::string& yaml_text, const std::string& source);
+/// Reads (with the input size cap) and parses a user's mechanism claim file (info.file set).
+MechanismClaimFile load_mechanism_claim_file(const std::string& path);
 
 /// Upper bound on the number of sides a claim may ask for ("4..60"): proofs and sweeps are
 /// polynomial in n but not cheap.

@@ -42,6 +42,10 @@ MechanismSolution<Rational> solve_mechanism_exact(const MechanismScene& scene);
 MechanismCheck check_mechanism(const MechanismScene& scene, const std::vector<MechanismCatalogue>& catalogues,
                                Arithmetic a);
 
+/// Solves the scene exactly and runs `claims` only (not the built-in ones, nor the scene's
+/// catalogues or ask): `linkproof check-claim CLAIMS --scene MECHANISM_SCENE`.
+MechanismCheck check_mechanism_claims(const MechanismScene& scene, const std::vector<MechanismClaim>& claims);
+
 /// Runs one claim: its comparisons judged exactly; an UndefinedQuantity thrown by the claim
 /// gives `undefined`, any other exception `error`.
 ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismContext& ctx);

@@ -389,6 +389,10 @@ MechanismCheck check_mechanism(const MechanismScene& s, const std::vector<Mechan
   return r;
 }
 
+MechanismCheck check_mechanism_claims(const MechanismScene& s, const std::vector<MechanismClaim>& claims) {
+  return check_solved(s, claims, {}, Arithmetic::Exact);
+}
+
 MechanismCheck check_mechanism(const MechanismScene& s, Arithmetic a) { return check_mechanism(s, {}, a); }
 
 }  // namespace linkproof

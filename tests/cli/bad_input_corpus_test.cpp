@@ -38,6 +38,11 @@ std::string claim_file(const std::string& rhs) {
   return "claims:\n  - id: c1\n    source: test\n    statement: s\n    lhs: omega_out\n    rhs: \"" + rhs + "\"\n";
 }
 
+// A mechanism claim file with one claim (lhs and rhs written in double quotes).
+std::string mechanism_claim(const std::string& lhs, const std::string& rhs) {
+  return "claims:\n  - id: c1\n    source: test\n    statement: s\n    lhs: \"" + lhs + "\"\n    rhs: \"" + rhs + "\"\n";
+}
+
 // The seed-001 four-bar with its crank O2-A given as `crank_a` and every coordinate times `scale`.
 std::string fourbar(const std::string& a, const std::string& b, const std::string& o4) {
   return "name: fourbar\nmechanism:\n  ground: \"1\"\n  joints:\n"
@@ -579,6 +584,56 @@ const std::vector<Case>& corpus() {
          return std::vector<std::string>{"check", write_temp("dims_omega_rpms.yaml", scene)};
        },
        2, "the unit `rpm/s` is for an angular acceleration; an angular velocity takes `rpm` or no unit", "", ""},
+      // --- issue 26: mechanism claims; a bad claim names file, claim, line and column
+      {"MechanismClaimUnknownLink",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_link.yaml", mechanism_claim("omega(coupler)", "0")),
+                                         "--scene", source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
+       },
+       2, "mc_link.yaml:5:17: claims[0].lhs (claim 'c1'): unknown link 'coupler' (the scene's links: 1, 2, 3, 4)", "", ""},
+      {"MechanismClaimWrongArity",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_arity.yaml", mechanism_claim("omega(\\\"3\\\", \\\"1\\\", \\\"2\\\")", "0")),
+                                         "--scene", source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
+       },
+       2, "claims[0].lhs (claim 'c1'): 'omega' with 3 arguments: it takes omega(L), omega(L, M)", "", ""},
+      {"MechanismClaimVectorWhereANumberIsDue",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_kind.yaml", mechanism_claim("1", "omega(A) + pos(A)")),
+                                         "--topology", source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
+       },
+       2, "mc_kind.yaml:6:20: claims[0].rhs (claim 'c1'): '+' between a number and a vector", "", "holds_on_samples"},
+      {"MechanismClaimSidesOfDifferentKinds",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_sides.yaml", mechanism_claim("pos(A)", "1")),
+                                         "--scene", source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
+       },
+       2, "lhs is a vector and rhs a number: a claim compares two numbers or two vectors", "", ""},
+      {"MechanismClaimSlidingRateOfARevoluteJoint",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_slide.yaml", mechanism_claim("sliding_v(A)", "0")),
+                                         "--topology", source_file("verify/scenes/mechanisms/dimensions_slider_crank.yaml")};
+       },
+       2, "joint 'A' is revolute: sliding rates need a prismatic joint", "", ""},
+      {"MechanismClaimsOnAPolygonTopology",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_poly.yaml", mechanism_claim("omega(a)", "0")),
+                                         "--topology", source_file("verify/scenes/pentagon.yaml")};
+       },
+       2, "mechanism", "", ""},
+      {"MechanismClaimSceneAndTopologyTogether",
+       [] {
+         const std::string scene = source_file("verify/scenes/mechanisms/seed001_fourbar.yaml");
+         return std::vector<std::string>{"check-claim", write_temp("mc_both.yaml", mechanism_claim("omega(\\\"3\\\")", "0")),
+                                         "--scene", scene, "--topology", scene};
+       },
+       2, "give --scene or --topology, not both", "", ""},
+      {"MechanismClaimDecimalNumber",
+       [] {
+         return std::vector<std::string>{"check-claim", write_temp("mc_dec.yaml", mechanism_claim("omega(\\\"3\\\")", "0.75")),
+                                         "--scene", source_file("verify/scenes/mechanisms/seed001_fourbar.yaml")};
+       },
+       2, "is a decimal number", "", ""},
   };
   return cases;
 }

@@ -121,3 +121,30 @@ TEST(ExitStatus, SweepAndBatchSweepAreDecidedFromTheirFacts) {
 
 }  // namespace
 }  // namespace linkproof
+
+namespace linkproof {
+namespace {
+
+// Claims on random configurations of a topology: samples are evidence, not a proof, so under
+// --strict a true claim that holds on them is not as expected; an erratum must be disproved.
+TEST(ExitStatus, SamplingStrictNeverAcceptsSamplesForATrueClaim) {
+  TopologySampleRun run;
+  SampleResult holds;
+  holds.info.expected = Expectation::Holds;
+  holds.verdict = TopologyVerdict::HoldsOnSamples;
+  SampleResult erratum;
+  erratum.info.expected = Expectation::Fails;
+  erratum.verdict = TopologyVerdict::Disproved;
+  run.claims = {holds, erratum};
+  const ClaimsStatus lenient = cli::sampling_status(run, false);
+  EXPECT_EQ(lenient.exit_status, 0);
+  EXPECT_EQ(lenient.as_expected, (std::vector<bool>{true, true}));
+  const ClaimsStatus strict = cli::sampling_status(run, true);
+  EXPECT_EQ(strict.exit_status, 1);
+  EXPECT_EQ(strict.as_expected, (std::vector<bool>{false, true}));
+  run.claims[1].verdict = TopologyVerdict::HoldsOnSamples;  // the erratum not found wrong
+  EXPECT_EQ(cli::sampling_status(run, false).exit_status, 1);
+}
+
+}  // namespace
+}  // namespace linkproof

@@ -1,0 +1,218 @@
+#include "mechanism/mechanism_data_claim.h"
+
+#include <cln/rational.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "mechanism/curvature.h"
+
+namespace linkproof {
+
+namespace {
+
+using Node = MechanismNode;
+using V = Vec2<Rational>;
+
+std::string list_names(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+void bind(Node& n, const MechanismScene& s, const std::string& field) {
+  for (Node& c : n.children) bind(c, s, field);
+  if (n.op != Node::Op::Name) return;
+  const Linkage& g = s.linkage;
+  const auto fail = [&](const std::string& problem) { throw InputError(n.where, field, problem); };
+  std::vector<std::string> joints, points;
+  for (const LinkageJoint& j : g.joints()) joints.push_back(j.name);
+  for (const MechanismPoint& p : s.points) points.push_back(p.name);
+  switch (n.kind) {
+    case MechanismKind::Link: {
+      const auto l = g.find_link(n.name);
+      if (!l) fail(fmt::format("unknown link '{}' (the scene's links: {})", n.name, list_names(g.link_names())));
+      n.index = *l;
+      return;
+    }
+    case MechanismKind::Point: {
+      if (const auto j = g.find_joint(n.name)) {
+        n.index = *j;
+        return;
+      }
+      const auto p = std::find(points.begin(), points.end(), n.name);
+      if (p == points.end())
+        fail(fmt::format("unknown joint or point '{}' (joints: {}; points: {})", n.name, list_names(joints),
+                         points.empty() ? "none" : list_names(points)));
+      n.index = static_cast<int>(p - points.begin());
+      n.is_tracer_point = true;
+      return;
+    }
+    case MechanismKind::Slider: {
+      const auto j = g.find_joint(n.name);
+      if (!j) fail(fmt::format("unknown joint '{}' (joints: {})", n.name, list_names(joints)));
+      if (g.joint(*j).type != JointType::Prismatic)
+        fail(fmt::format("joint '{}' is revolute: sliding rates need a prismatic joint", n.name));
+      n.index = *j;
+      return;
+    }
+    default: LINKPROOF_ASSERT(false, "a name node of a value kind");
+  }
+}
+
+MechanismValue number(Rational x) { return {false, std::move(x), 0}; }
+MechanismValue vector_value(const V& v) { return {true, v.x, v.y}; }
+V as_vector(const MechanismValue& v) { return {v.x, v.y}; }
+
+V position(const Node& n, const MechanismFrame& f) {
+  return n.is_tracer_point ? f.scene.points[static_cast<size_t>(n.index)].at
+                           : f.scene.linkage.joint(n.index).at;
+}
+
+const LinkField<Rational>& field_of(const Node& n, const MechanismFrame& f) { return f.fields[static_cast<size_t>(n.index)]; }
+
+[[noreturn]] void undefined(const Node& n, const std::string& reason) { throw UndefinedQuantity(n.text, reason); }
+
+// |u| of a prismatic axis when it is rational (a unit or Pythagorean direction).
+Rational axis_length(const Node& n, const MechanismFrame& f) {
+  const V& u = f.scene.linkage.joint(n.index).axis;
+  cln::cl_RA root;
+  if (!cln::sqrtp(norm2(u), &root))
+    undefined(n, fmt::format("the axis ({}, {}) of joint '{}' has an irrational length: give it as a rational unit "
+                             "direction (e.g. [3/5, 4/5] or an angle) or compare dot(vel(J, slider, guide), axis)",
+                             format_rational(u.x), format_rational(u.y), n.name));
+  return root;
+}
+
+MechanismValue call(const Node& n, const MechanismFrame& f) {
+  using Q = MechanismQuantity;
+  const auto& a = n.children;
+  const auto value = [&](size_t k) { return evaluate_mechanism_expression(a[k], f); };
+  const auto link_motion = [&](bool relative) {
+    const LinkField<Rational>& m = field_of(a[1], f);
+    const V X = position(a[0], f);
+    if (!relative) return RelativePointMotion<Rational>{m.velocity(X), m.acceleration(X)};
+    return relative_point_motion(m, field_of(a[2], f), X);
+  };
+  switch (n.word->quantity) {
+    case Q::Omega: return number(field_of(a[0], f).omega);
+    case Q::OmegaRelative: return number(field_of(a[0], f).omega - field_of(a[1], f).omega);
+    case Q::Alpha: return number(field_of(a[0], f).omega_dot);
+    case Q::AlphaRelative: return number(field_of(a[0], f).omega_dot - field_of(a[1], f).omega_dot);
+    case Q::Position: return vector_value(position(a[0], f));
+    case Q::Velocity: return vector_value(link_motion(false).v);
+    case Q::VelocityRelative: return vector_value(link_motion(true).v);
+    case Q::Acceleration: return vector_value(link_motion(false).a);
+    case Q::AccelerationRelative: return vector_value(link_motion(true).a);
+    case Q::Pole: {
+      const PlanePoint<Rational> p = construct_pole(field_of(a[0], f), field_of(a[1], f), n.text);
+      if (p.kind == PlanePoint<Rational>::Kind::AtInfinity)
+        undefined(n, "the pole is at infinity: omega(L) = omega(M), a relative translation");
+      if (!p.is_finite()) undefined(n, p.reason);
+      return vector_value(p.at);
+    }
+    case Q::Centre: {
+      const V X = position(a[0], f);
+      const PlanePoint<Rational> c = construct_curvature_centre(X, link_motion(true), n.text);
+      if (c.kind == PlanePoint<Rational>::Kind::AtInfinity)
+        undefined(n, "the centre is at infinity: the point is on the inflection circle (v x a = 0)");
+      if (!c.is_finite()) undefined(n, c.reason);
+      return vector_value(c.at);
+    }
+    case Q::SlidingV: return number(f.motion.slide[static_cast<size_t>(a[0].index)] * axis_length(a[0], f));
+    case Q::SlidingA: return number(f.motion.slide_dot[static_cast<size_t>(a[0].index)] * axis_length(a[0], f));
+    case Q::Dot: return number(dot(as_vector(value(0)), as_vector(value(1))));
+    case Q::Cross: return number(cross(as_vector(value(0)), as_vector(value(1))));
+    case Q::Perp: return vector_value(perp(as_vector(value(0))));
+    case Q::Norm2: return number(norm2(as_vector(value(0))));
+    case Q::Vx: return number(value(0).x);
+    case Q::Vy: return number(value(0).y);
+    case Q::Vec: return vector_value(V{value(0).x, value(1).x});
+    case Q::Meet: {
+      const PlanePoint<Rational> p = intersect_lines(as_vector(value(0)), as_vector(value(1)), as_vector(value(2)),
+                                                     as_vector(value(3)), n.text);
+      if (p.kind == PlanePoint<Rational>::Kind::AtInfinity) undefined(n, "the two lines are parallel");
+      if (!p.is_finite()) undefined(n, p.reason);
+      return vector_value(p.at);
+    }
+  }
+  LINKPROOF_ASSERT(false, "a mechanism word without an evaluation");
+  return {};
+}
+
+}  // namespace
+
+MechanismFrame::MechanismFrame(const MechanismScene& s, const MechanismMotion<Rational>& m)
+    : scene(s), motion(m), fields(link_fields(s.linkage, m)) {}
+
+void bind_mechanism_claim(MechanismDataClaim& claim, const MechanismScene& scene) {
+  bind(claim.lhs.root(), scene, claim.lhs.field());
+  bind(claim.rhs.root(), scene, claim.rhs.field());
+}
+
+MechanismValue evaluate_mechanism_expression(const Node& n, const MechanismFrame& f) {
+  switch (n.op) {
+    case Node::Op::Constant: return number(n.constant);
+    case Node::Op::Name: LINKPROOF_ASSERT(false, "a name evaluated as a value"); return {};
+    case Node::Op::Call: return call(n, f);
+    case Node::Op::Negate: {
+      MechanismValue v = evaluate_mechanism_expression(n.children[0], f);
+      v.x = -v.x, v.y = -v.y;
+      return v;
+    }
+    case Node::Op::Power: {
+      const Rational b = evaluate_mechanism_expression(n.children[0], f).x;
+      if (n.exponent < 0 && cln::zerop(b))
+        throw UndefinedQuantity(n.children[0].text, "a negative power of 0 (it is 0 here)");
+      return number(cln::expt(b, n.exponent));
+    }
+    default: break;
+  }
+  const MechanismValue a = evaluate_mechanism_expression(n.children[0], f);
+  const MechanismValue b = evaluate_mechanism_expression(n.children[1], f);
+  switch (n.op) {
+    case Node::Op::Add: return {a.is_vector, a.x + b.x, a.y + b.y};
+    case Node::Op::Subtract: return {a.is_vector, a.x - b.x, a.y - b.y};
+    case Node::Op::Multiply:
+      if (a.is_vector) return {true, a.x * b.x, a.y * b.x};
+      if (b.is_vector) return {true, a.x * b.x, a.x * b.y};
+      return number(a.x * b.x);
+    case Node::Op::Divide:
+      if (cln::zerop(b.x)) throw UndefinedQuantity(n.children[1].text, "a divisor that is 0 here");
+      return {a.is_vector, a.x / b.x, a.is_vector ? a.y / b.x : Rational(0)};
+    default: break;
+  }
+  LINKPROOF_ASSERT(false, "an unknown mechanism expression node");
+  return {};
+}
+
+ClaimSides<Rational> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrame& f) {
+  const auto side = [&](const MechanismExpression& e) {
+    return Defined<MechanismValue>::attempt([&] { return evaluate_mechanism_expression(e.root(), f); });
+  };
+  const Defined<MechanismValue> l = side(claim.lhs), r = side(claim.rhs);
+  const auto component = [](const Defined<MechanismValue>& v, bool y) {
+    if (!v.has_value()) return Defined<Rational>::undefined(v.quantity(), v.reason());
+    return Defined<Rational>(y ? v.get().y : v.get().x);
+  };
+  ClaimSides<Rational> s;
+  if (claim.lhs.kind() == MechanismKind::Vector) {
+    s.instances.push_back({"x", component(l, false), component(r, false)});
+    s.instances.push_back({"y", component(l, true), component(r, true)});
+  } else {
+    s.instances.push_back({"total", component(l, false), component(r, false)});
+  }
+  return s;
+}
+
+MechanismClaim to_mechanism_claim(const MechanismDataClaim& claim) {
+  MechanismClaim c;
+  c.info = claim.info;
+  c.evaluate = [claim](const MechanismContext& ctx) {
+    const MechanismFrame frame(ctx.scene, ctx.truth.motion);
+    return evaluate_mechanism_claim(claim, frame);
+  };
+  return c;
+}
+
+}  // namespace linkproof

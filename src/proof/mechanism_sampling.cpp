@@ -1,0 +1,308 @@
+#include "proof/mechanism_sampling.h"
+
+#include <cln/integer.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <map>
+
+#include "check/random_polygon.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "mechanism/mechanism_data_claim.h"
+#include "mechanism/mechanism_vector_route.h"
+
+namespace linkproof {
+
+namespace {
+
+// Rational unit directions (Pythagorean triples): |u| = 1 exactly, so sliding_v is rational.
+const Vec2<Rational> kUnitDirections[] = {
+    {1, 0}, {Rational(3) / 5, Rational(4) / 5}, {Rational(5) / 13, Rational(12) / 13}, {Rational(8) / 17, Rational(15) / 17}};
+
+// The coordinates of a configuration that are drawn and shrunk: one position per group of
+// coincident joints and points, one axis per prismatic joint, two rates per input.
+struct Layout {
+  std::vector<int> joint_group, point_group;  // group of each joint, of each tracer point
+  int groups = 0;
+};
+
+Layout layout_of(const MechanismScene& s) {
+  Layout out;
+  std::vector<Vec2<Rational>> seen;
+  const auto group = [&](const Vec2<Rational>& p) {
+    for (size_t k = 0; k < seen.size(); ++k)
+      if (seen[k].x == p.x && seen[k].y == p.y) return static_cast<int>(k);
+    seen.push_back(p);
+    return static_cast<int>(seen.size() - 1);
+  };
+  for (const LinkageJoint& j : s.linkage.joints()) out.joint_group.push_back(group(j.at));
+  for (const MechanismPoint& p : s.points) out.point_group.push_back(group(p.at));
+  out.groups = static_cast<int>(seen.size());
+  return out;
+}
+
+// The values of one configuration, in the layout's order.
+struct Config {
+  std::vector<Vec2<Rational>> positions;  // per group
+  std::vector<Vec2<Rational>> axes;       // per joint (revolute: unused)
+  std::vector<Rational> rate, rate_dot;   // per input
+};
+
+MechanismScene build_scene(const MechanismScene& topology, const Layout& layout, const Config& c,
+                           const std::string& name) {
+  MechanismScene s;
+  s.name = name;
+  s.source = name + ".yaml";
+  std::vector<LinkageJoint> joints = topology.linkage.joints();
+  for (size_t j = 0; j < joints.size(); ++j) {
+    joints[j].at = c.positions[static_cast<size_t>(layout.joint_group[j])];
+    if (joints[j].type == JointType::Prismatic) joints[j].axis = c.axes[j];
+  }
+  s.linkage = Linkage(topology.linkage.link_names(), topology.linkage.ground(), std::move(joints));
+  s.inputs = topology.inputs;
+  for (size_t k = 0; k < s.inputs.size(); ++k) s.inputs[k].rate = c.rate[k], s.inputs[k].rate_dot = c.rate_dot[k];
+  s.points = topology.points;
+  for (size_t p = 0; p < s.points.size(); ++p) s.points[p].at = c.positions[static_cast<size_t>(layout.point_group[p])];
+  return s;
+}
+
+Rational random_rate(SplitMix64& rng, bool nonzero) {
+  long p = rng.uniform(-9, 9);
+  if (nonzero && p == 0) p = 1;
+  return Rational(p) / Rational(rng.uniform(1, 4));
+}
+
+Config random_config(const MechanismScene& topology, const Layout& layout, std::uint64_t seed, int index, int range) {
+  SplitMix64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index) * 0xBF58476D1CE4E5B9ull + 0x51ull);
+  Config c;
+  for (int g = 0; g < layout.groups; ++g) c.positions.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});
+  for (const LinkageJoint& j : topology.linkage.joints()) {
+    Vec2<Rational> u = kUnitDirections[rng.uniform(0, 3)];
+    if (rng.uniform(0, 1)) u = {u.y, u.x};
+    for (long turn = rng.uniform(0, 3); turn > 0; --turn) u = perp(u);
+    c.axes.push_back(j.type == JointType::Prismatic ? u : Vec2<Rational>{0, 0});
+  }
+  for (size_t k = 0; k < topology.inputs.size(); ++k) {
+    c.rate.push_back(random_rate(rng, true));
+    c.rate_dot.push_back(random_rate(rng, false));
+  }
+  return c;
+}
+
+// The exact motion by the rigid-body route; nullopt for a singular velocity system.
+std::optional<MechanismSolution<Rational>> solve(const MechanismScene& s) {
+  try {
+    return solve_mechanism<Rational>(
+        s.linkage, s.inputs, rigid_body_constraint_matrix<Rational>(s.linkage),
+        [&](const std::vector<Rational>& qd) { return rigid_body_acceleration_rhs<Rational>(s.linkage, qd); }, s.source);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+// Fails / Holds / Undefined of one claim on one solved configuration (no evidence kept).
+Verdict quick_verdict(const MechanismDataClaim& claim, const MechanismFrame& frame, std::string* quantity,
+                      std::string* reason) {
+  const ClaimSides<Rational> sides = evaluate_mechanism_claim(claim, frame);
+  Verdict v = Verdict::Holds;
+  for (const auto& c : sides.instances) {
+    if (!c.lhs.has_value() || !c.rhs.has_value()) {
+      const auto& u = c.lhs.has_value() ? c.rhs : c.lhs;
+      if (quantity && quantity->empty()) *quantity = u.quantity(), *reason = u.reason();
+      v = combine(v, Verdict::Undefined);
+    } else {
+      v = combine(v, c.lhs.get() == c.rhs.get() ? Verdict::Holds : Verdict::Fails);
+    }
+  }
+  return v;
+}
+
+// True if the scene reader accepts the configuration as written: it refuses some configurations
+// the solver accepts (a driven link whose two joints coincide), and a counterexample must replay.
+bool is_readable(const MechanismScene& s) {
+  try {
+    parse_mechanism_scene(mechanism_scene_to_yaml(s), s.source);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+bool still_fails(const MechanismDataClaim& claim, const MechanismScene& s) {
+  const auto solution = solve(s);
+  if (!solution) return false;
+  const MechanismFrame frame(s, solution->motion);
+  return quick_verdict(claim, frame, nullptr, nullptr) == Verdict::Fails && is_readable(s);
+}
+
+// Size of a rational for shrinking: |numerator| + denominator.
+Rational size_of(const Rational& q) {
+  const cln::cl_I n = cln::abs(cln::numerator(q)), d = cln::denominator(q);
+  return Rational(n) + Rational(d);
+}
+
+std::vector<Rational> smaller_integers(const Rational& x) {
+  std::vector<Rational> out{0};
+  const cln::cl_I t = cln::truncate1(x);
+  if (t != 0) out.push_back(cln::truncate1(t, 2));
+  if (t > 0) out.push_back(t - cln::cl_I(1));
+  if (t < 0) out.push_back(t + cln::cl_I(1));
+  if (Rational(t) != x) out.push_back(t);
+  return out;
+}
+
+std::vector<Rational> smaller_rates(const Rational& x, bool nonzero) {
+  std::vector<Rational> out;
+  if (!nonzero) out.push_back(0);
+  out.push_back(1);
+  out.push_back(-1);
+  for (const Rational& r : smaller_integers(x))
+    if (!nonzero || r != 0) out.push_back(r);
+  return out;
+}
+
+// Shrinks a failing configuration one value at a time (see the header comment).
+MechanismCounterexample shrink(const MechanismDataClaim& claim, const MechanismScene& topology, const Layout& layout,
+                               Config c, int index, const TopologySampling& o) {
+  MechanismCounterexample cx;
+  cx.configuration = index;
+  const std::string name = fmt::format("counterexample-{}", claim.info.id);
+  const auto accept = [&](Config candidate) {
+    if (cx.shrink_tried >= o.shrink_budget) return false;
+    ++cx.shrink_tried;
+    if (!still_fails(claim, build_scene(topology, layout, candidate, name))) return false;
+    c = std::move(candidate);
+    ++cx.shrink_steps;
+    return true;
+  };
+  for (bool changed = true; changed && cx.shrink_tried < o.shrink_budget;) {
+    changed = false;
+    for (size_t g = 0; g < c.positions.size(); ++g)
+      for (int axis = 0; axis < 2; ++axis) {
+        const Rational current = axis ? c.positions[g].y : c.positions[g].x;
+        for (const Rational& v : smaller_integers(current)) {
+          if (!(size_of(v) < size_of(current))) continue;
+          Config t = c;
+          (axis ? t.positions[g].y : t.positions[g].x) = v;
+          if (accept(std::move(t))) { changed = true; break; }
+        }
+      }
+    for (size_t j = 0; j < c.axes.size(); ++j) {
+      if (topology.linkage.joint(static_cast<int>(j)).type != JointType::Prismatic) continue;
+      for (const Vec2<Rational>& u : {Vec2<Rational>{1, 0}, Vec2<Rational>{0, 1}}) {
+        if (c.axes[j].x == u.x && c.axes[j].y == u.y) break;
+        Config t = c;
+        t.axes[j] = u;
+        if (accept(std::move(t))) { changed = true; break; }
+      }
+    }
+    for (size_t k = 0; k < c.rate.size(); ++k)
+      for (int dot = 0; dot < 2; ++dot) {
+        const Rational current = dot ? c.rate_dot[k] : c.rate[k];
+        for (const Rational& v : smaller_rates(current, !dot)) {
+          if (!(size_of(v) < size_of(current)) && !(size_of(v) == size_of(current) && v > current)) continue;
+          Config t = c;
+          (dot ? t.rate_dot[k] : t.rate[k]) = v;
+          if (accept(std::move(t))) { changed = true; break; }
+        }
+      }
+  }
+  cx.scene = build_scene(topology, layout, c, name);
+  cx.scene.source = "counterexample";
+  cx.scene_yaml = mechanism_scene_to_yaml(cx.scene);
+  const auto solution = solve(cx.scene);
+  LINKPROOF_ASSERT(solution.has_value(), "a shrunk counterexample that does not solve");
+  const MechanismContext ctx{cx.scene, *solution};
+  cx.outcome = run_mechanism_claim(to_mechanism_claim(claim), ctx);
+  return cx;
+}
+
+}  // namespace
+
+std::string to_string(TopologyVerdict v) {
+  switch (v) {
+    case TopologyVerdict::HoldsOnSamples: return "holds_on_samples";
+    case TopologyVerdict::Disproved: return "disproved";
+    case TopologyVerdict::Undefined: return "undefined";
+  }
+  return "?";
+}
+
+bool SampleResult::is_as_expected() const {
+  if (info.expected == Expectation::Fails) return verdict == TopologyVerdict::Disproved;
+  return verdict != TopologyVerdict::Disproved;
+}
+
+MechanismScene random_topology_configuration(const MechanismScene& scene, std::uint64_t seed, int index,
+                                             int coordinate_range) {
+  const Layout layout = layout_of(scene);
+  return build_scene(scene, layout, random_config(scene, layout, seed, index, coordinate_range),
+                     fmt::format("{}-sample-{}", scene.name, index));
+}
+
+TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
+                                  const TopologySampling& o) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  TopologySampleRun run;
+  run.topology = scene.name;
+  run.options = o;
+  const Layout layout = layout_of(scene);
+  for (const MechanismDataClaim& c : claims) {
+    SampleResult r;
+    r.info = c.info;
+    run.claims.push_back(std::move(r));
+  }
+  std::vector<double> claim_seconds(claims.size(), 0.0);
+  const int attempts = 20 * o.count + 100;
+  std::vector<bool> done(claims.size(), false);
+  std::map<size_t, std::pair<int, Config>> failures;  // claim -> (configuration, values)
+  for (int i = 0; i < attempts; ++i) {
+    bool any_open = false;
+    for (size_t k = 0; k < claims.size(); ++k) any_open = any_open || !done[k];
+    if (!any_open) break;
+    const Config config = random_config(scene, layout, o.seed, i, o.coordinate_range);
+    const MechanismScene s = build_scene(scene, layout, config, fmt::format("{}-sample-{}", scene.name, i));
+    ++run.generated;
+    const auto solution = solve(s);
+    if (!solution) {
+      ++run.singular;
+      continue;
+    }
+    ++run.solved;
+    const MechanismFrame frame(s, solution->motion);
+    for (size_t k = 0; k < claims.size(); ++k) {
+      if (done[k]) continue;
+      const auto t0 = Clock::now();
+      SampleResult& r = run.claims[k];
+      switch (quick_verdict(claims[k], frame, &r.undefined_quantity, &r.undefined_reason)) {
+        case Verdict::Holds: done[k] = ++r.compared >= o.count; break;
+        case Verdict::Undefined: ++r.undefined; break;
+        default:
+          if (!is_readable(s)) {  // a degenerate configuration: no replayable counterexample
+            ++run.degenerate;
+            break;
+          }
+          done[k] = true;
+          failures[k] = {i, config};
+          break;
+      }
+      claim_seconds[k] += std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+  }
+  for (size_t k = 0; k < claims.size(); ++k) {
+    SampleResult& r = run.claims[k];
+    const auto t0 = Clock::now();
+    if (const auto f = failures.find(k); f != failures.end()) {
+      r.verdict = TopologyVerdict::Disproved;
+      r.counterexample = shrink(claims[k], scene, layout, f->second.second, f->second.first, o);
+    } else {
+      r.verdict = r.compared > 0 ? TopologyVerdict::HoldsOnSamples : TopologyVerdict::Undefined;
+    }
+    r.seconds = claim_seconds[k] + std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return run;
+}
+
+}  // namespace linkproof

@@ -1,0 +1,121 @@
+#include "report/mechanism_claim_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "report/json_report.h"
+#include "report/number_text.h"
+
+namespace linkproof {
+
+namespace {
+
+std::string rests_on(const TopologySampleRun& run) {
+  return fmt::format("exact evaluation on random configurations of the topology of {} (seed {}; small-integer "
+                     "positions, rational unit axes, rational input rates); holds_on_samples is NOT a proof for "
+                     "every configuration",
+                     run.topology, run.options.seed);
+}
+
+std::string scope(const SampleResult& r, const TopologySampleRun& run) {
+  switch (r.verdict) {
+    case TopologyVerdict::HoldsOnSamples:
+      return fmt::format("exactly equal on {} random configuration{}{} ({} undefined); not a proof", r.compared,
+                         r.compared == 1 ? "" : "s",
+                         r.compared < run.options.count ? fmt::format(" (fewer than the {} asked: the {} attempts ran out)",
+                                                                      run.options.count, run.generated)
+                                                        : "",
+                         r.undefined);
+    case TopologyVerdict::Disproved:
+      return fmt::format("the sides differ on random configuration {} (compared equal on {} before); shrunk in {} "
+                         "steps",
+                         r.counterexample->configuration, r.compared, r.counterexample->shrink_steps);
+    case TopologyVerdict::Undefined:
+      return fmt::format("undefined on every one of the {} configurations solved: {} ({})", r.undefined,
+                         r.undefined_quantity, r.undefined_reason);
+  }
+  return "";
+}
+
+}  // namespace
+
+nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status) {
+  using json = nlohmann::json;
+  json claims = json::array();
+  int ok = 0;
+  for (size_t k = 0; k < run.claims.size(); ++k) {
+    const SampleResult& r = run.claims[k];
+    ok += status.as_expected[k];
+    json c = {{"id", r.info.id},
+              {"source", r.info.source},
+              {"statement", r.info.statement},
+              {"expected", std::string(to_string(r.info.expected))},
+              {"verdict", to_string(r.verdict)},
+              {"as_expected", static_cast<bool>(status.as_expected[k])},
+              {"scope", scope(r, run)},
+              {"compared", r.compared},
+              {"undefined_configurations", r.undefined},
+              {"undefined", r.undefined_quantity.empty()
+                                ? json(nullptr)
+                                : json{{"quantity", r.undefined_quantity}, {"reason", r.undefined_reason}}},
+              {"counterexample", json(nullptr)},
+              {"seconds", r.seconds}};
+    if (r.counterexample) {
+      const MechanismCounterexample& x = *r.counterexample;
+      c["counterexample"] = {{"configuration", x.configuration},
+                             {"shrink_steps", x.shrink_steps},
+                             {"shrink_tried", x.shrink_tried},
+                             {"scene_yaml", x.scene_yaml},
+                             {"check", to_json(x.outcome)}};
+    }
+    claims.push_back(std::move(c));
+  }
+  return {{"mode", "topology"},
+          {"topology", run.topology},
+          {"seed", run.options.seed},
+          {"count", run.options.count},
+          {"configurations", {{"generated", run.generated}, {"singular_skipped", run.singular}, {"solved", run.solved},
+                              {"degenerate_failures_skipped", run.degenerate}}},
+          {"rests_on", rests_on(run)},
+          {"claims", claims},
+          {"summary", {{"claims", run.claims.size()}, {"as_expected", ok},
+                       {"not_as_expected", static_cast<int>(run.claims.size()) - ok}}},
+          {"seconds", run.seconds},
+          {"exit_status", status.exit_status}};
+}
+
+void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsStatus& status) {
+  int ok = 0;
+  for (const bool b : status.as_expected) ok += b;
+  fmt::print(out, "{} claim(s) on random configurations of the topology of {}: {} as expected, {} not\n",
+             run.claims.size(), run.topology, ok, static_cast<int>(run.claims.size()) - ok);
+  fmt::print(out, "configurations: {} drawn, {} skipped (singular velocity system), {} solved; seed {}, count {}; "
+                  "{:.3f} s\n",
+             run.generated, run.singular, run.solved, run.options.seed, run.options.count, run.seconds);
+  if (run.degenerate > 0)
+    fmt::print(out, "{} failure(s) skipped on degenerate configurations the scene reader refuses\n", run.degenerate);
+  fmt::print(out, "rests on: {}\n\n", rests_on(run));
+  for (size_t k = 0; k < run.claims.size(); ++k) {
+    const SampleResult& r = run.claims[k];
+    fmt::print(out, "{:18} {}  (expected {}){}\n", to_string(r.verdict), r.info.id, to_string(r.info.expected),
+               status.as_expected[k] ? "" : "  <-- NOT AS EXPECTED");
+    fmt::print(out, "    {}\n    {}\n", r.info.statement, scope(r, run));
+    if (!r.counterexample) continue;
+    const MechanismCounterexample& x = *r.counterexample;
+    for (const ComparisonOutcome& c : x.outcome.instances)
+      fmt::print(out, "    {}: lhs {}  rhs {}  ({})\n", c.label, c.lhs ? number_text(*c.lhs) : "undefined",
+                 c.rhs ? number_text(*c.rhs) : "undefined", to_string(c.verdict));
+    fmt::print(out, "    counterexample scene (check-claim CLAIMS --scene FILE re-fails on it):\n");
+    std::string line;
+    for (char ch : x.scene_yaml) {
+      if (ch != '\n') {
+        line += ch;
+        continue;
+      }
+      fmt::print(out, "      {}\n", line);
+      line.clear();
+    }
+  }
+}
+
+}  // namespace linkproof
