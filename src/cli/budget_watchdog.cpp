@@ -101,18 +101,6 @@ void show_progress(std::string_view phase) {
 
 }  // namespace
 
-CLI::Validator budget_validator() {
-  return CLI::Validator(
-      [](std::string& s) -> std::string {
-        char* end = nullptr;
-        const double v = std::strtod(s.c_str(), &end);
-        if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v) || v < 0 || v > 604800)
-          return "'" + s + "' is not a time budget: expected a finite number of seconds from 0 to 604800";
-        return "";
-      },
-      "SECONDS");
-}
-
 double watchdog_grace_seconds(double max_seconds) { return std::clamp(0.05 * max_seconds, 1.0, 30.0); }
 
 BudgetScope::BudgetScope(const Resources& resources, bool program, bool json) {

@@ -10,7 +10,6 @@
 // address space); an allocation past it throws std::bad_alloc, reported as exit 2.
 #pragma once
 
-#include <CLI/CLI.hpp>
 
 #include "error_report.h"
 
@@ -24,8 +23,6 @@ struct Resources {
   int max_memory_mb = kDefaultMaxMemoryMb;  ///< 0: no memory limit
 };
 
-/// CLI11 check for --max-seconds: a finite number of seconds from 0 to 604800 (a week).
-CLI::Validator budget_validator();
 
 /// How long after the deadline the watchdog stops the program: 5 % of the budget, at least 1 s
 /// and at most 30 s (the time a unit of work may overrun its check point).

@@ -1,5 +1,7 @@
 // Choosing claims of a claim file and checking the proof options: shared by `prove` and
 // `report` on a claim file.
+#include <fmt/format.h>
+
 #include "command.h"
 #include "linkproof/core/error.h"
 #include "proof/prove.h"
@@ -28,8 +30,9 @@ void check_prove_limits(const std::optional<int>& n, double ladder_seconds) {
                      "a proof at one n is limited to n <= " + std::to_string(kMaxPerNProofSides) +
                          ": its cost grows about as n^3 (eq. 22: about 20 s at n = 20, hours at n = 200); the proof "
                          "for every n (without --n) covers n = " + std::to_string(*n) + " (docs/limits.md)");
-  if (ladder_seconds < 0 || ladder_seconds > 3600)
-    throw InputError("<command line>", "--ladder-seconds", "must be between 0 and 3600");
+  if (ladder_seconds < 0 || ladder_seconds > kMaxClaimLadderSeconds)
+    throw InputError("<command line>", "--ladder-seconds",
+                     fmt::format("must be between 0 and {}", kMaxClaimLadderSeconds));
 }
 
 }  // namespace linkproof::cli

@@ -52,7 +52,7 @@ std::optional<int> parse(const std::vector<std::string>& args, std::ostream& out
   app.add_option("--max-seconds", max_seconds,
                  "wall-clock budget of the run in seconds (default 3600; sweep: none; 0: none); past it the run "
                  "stops with exit 2 (docs/limits.md)")
-      ->check(budget_validator());
+      ->check(seconds_validator(kMaxRunSeconds));
   app.add_option("--max-memory-mb", resources.max_memory_mb,
                  "address-space budget in MiB (default 8192; 0: none); past it the run stops with exit 2")
       ->check(int_range_validator(0, 1 << 24));

@@ -76,8 +76,13 @@ std::pair<int, int> parse_n_range(const std::string& s, const std::string& optio
 /// CLI11 check for a seed: an unsigned 64-bit integer in decimal digits. "-1" or a value above
 /// 2^64 - 1 is refused (CLI11 alone wraps or clamps them, which breaks replay).
 CLI::Validator seed_validator();
-/// CLI11 check for a time budget: a finite number of seconds from 0 to 3600 (NaN, inf refused).
-CLI::Validator seconds_validator();
+/// The largest time budgets: a per-claim proof ladder (--ladder-seconds) and a whole run
+/// (--max-seconds).
+inline constexpr double kMaxClaimLadderSeconds = 3600;
+inline constexpr double kMaxRunSeconds = 604800;  // a week
+/// CLI11 check for a time budget: a finite number of seconds from 0 to max_seconds (NaN, inf
+/// refused). Every seconds option uses it.
+CLI::Validator seconds_validator(double max_seconds = kMaxClaimLadderSeconds);
 /// CLI11 check for an integer option from lo to hi.
 CLI::Validator int_range_validator(int lo, int hi);
 /// The claims of `file` named by `ids` (the full id or its last part, e.g. "eq22"), in that

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "command.h"
 #include "linkproof/core/error.h"
 
@@ -72,12 +74,13 @@ CLI::Validator seed_validator() {
       "SEED");
 }
 
-CLI::Validator seconds_validator() {
+CLI::Validator seconds_validator(double max_seconds) {
   return CLI::Validator(
-      [](std::string& s) -> std::string {
+      [max_seconds](std::string& s) -> std::string {
         const auto v = whole_number<double>(s);
-        if (!v || !std::isfinite(*v) || *v < 0 || *v > 3600)
-          return "'" + s + "' is not a time budget: expected a finite number of seconds from 0 to 3600";
+        if (!v || !std::isfinite(*v) || *v < 0 || *v > max_seconds)
+          return fmt::format("'{}' is not a time budget: expected a finite number of seconds from 0 to {}", s,
+                             max_seconds);
         return "";
       },
       "SECONDS");
