@@ -1,12 +1,13 @@
 // linkproof check-claim FILE.yaml [--n A..B] [--count N] [--seed S] [--scene SCENE [--arith A]] [--json]
 // linkproof check-claim FILE.yaml --scene MECHANISM_SCENE [--json]
-// linkproof check-claim FILE.yaml --topology MECHANISM_SCENE [--count K] [--seed S] [--json]
+// linkproof check-claim FILE.yaml --topology MECHANISM_SCENE [--count K] [--seed S] [--proof-seconds S] [--json]
 // linkproof check-claim --vocabulary
 //
 // Mechanism claims (docs/claims.md, "Mechanism claims"): with a mechanism scene, FILE is read in
 // the mechanism vocabulary; --scene judges every claim on the scene's exact solution, --topology
-// on K random exact configurations of its topology (holds_on_samples, not a proof, or disproved
-// with a shrunk counterexample scene).
+// proves it over every configuration of the scene's topology (proof/mechanism_proof.h), or with
+// --count K judges it on K random exact configurations (holds_on_samples, not a proof, or
+// disproved with a shrunk counterexample scene).
 //
 // A user's claims: proved for every n (symbolic, with the exceptional set), proved for the
 // given n, holding on every random exact instance (no proof found), or failing with an exact
@@ -43,6 +44,7 @@ struct CheckClaimArgs {
   std::string scene;
   std::string topology;
   bool count_given = false;
+  double proof_seconds = 60;
   std::string arith = "exact";
   double ladder_seconds = 1.0;
   bool json = false;
@@ -56,30 +58,6 @@ void print_vocabulary(std::ostream& out) {
   fmt::print(out, "\nmechanism claims (with --scene or --topology MECHANISM_SCENE; L, M links, P a joint or point, J a "
                   "prismatic joint; names bare or quoted):\n");
   for (const MechanismWord& w : mechanism_vocabulary()) fmt::print(out, "{:24} {}\n", w.signature, w.meaning);
-}
-
-// The claim file read for a mechanism scene and bound to its names. A polygon claim file is
-// named as such (the scene is the other half of the mismatch).
-std::vector<MechanismDataClaim> mechanism_claims_for(const std::string& file, const MechanismScene& scene,
-                                                     const std::string& scene_path) {
-  MechanismClaimFile claims;
-  try {
-    claims = load_mechanism_claim_file(file);
-  } catch (const InputError& e) {
-    bool polygon_file = false;
-    try {
-      load_claim_file(file);
-      polygon_file = true;
-    } catch (const InputError&) {
-    }
-    if (!polygon_file) throw;
-    throw InputError(scene_path, "mechanism",
-                     "this is a mechanism scene (top-level `mechanism`), and " + file +
-                         " is a claim file about polygons (" + e.source() + ": " + e.problem() +
-                         "); mechanism claims use omega(L), pos(P), vel(P, L), ... (check-claim --vocabulary)");
-  }
-  for (MechanismDataClaim& c : claims.claims) bind_mechanism_claim(c, scene);
-  return std::move(claims.claims);
 }
 
 int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path, bool topology, std::ostream& out) {
@@ -101,6 +79,13 @@ int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path,
     return status.exit_status;
   }
   if (a.count < 1 || a.count > 100000) throw InputError("<command line>", "--count", "must be between 1 and 100000");
+  if (!a.count_given) {  // a proof for every configuration; the samples only where none is made
+    TopologyProofOptions o;
+    o.seconds = a.proof_seconds;
+    o.sampling.count = a.count;
+    o.sampling.seed = a.seed;
+    return run_topology_proof(scene, claims, o, a.json, a.strict, out);
+  }
   TopologySampling o;
   o.count = a.count;
   o.seed = a.seed;
@@ -238,8 +223,13 @@ void add_check_claim_command(CLI::App& app, Action& action) {
                 "check the claims on this scene only (in the arithmetic of --arith); a mechanism scene takes mechanism "
                 "claims (exact)");
   c->add_option("--topology", a.topology,
-                "mechanism claims on --count random exact configurations of this mechanism scene's topology "
-                "(holds_on_samples, not a proof, or disproved with a shrunk counterexample scene)");
+                "mechanism claims over every configuration of this mechanism scene's topology: proved, "
+                "proved_generically (with the exceptional set) or disproved with a shrunk counterexample scene; with "
+                "--count K only K random exact configurations (holds_on_samples, not a proof)");
+  c->add_option("--proof-seconds", a.proof_seconds,
+                "with --topology: time for the symbolic proof per claim (default 60); past it the claim is judged "
+                "on --count random configurations")
+      ->check(seconds_validator(kMaxClaimLadderSeconds));
   c->add_option("--arith", a.arith,
                 "arithmetic of the --scene check and of the random instances judged when no proof is found: "
                 "exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help); proofs and "

@@ -92,6 +92,14 @@ std::vector<const DataClaim*> choose_claims(const ClaimFile& file, const std::ve
 /// --n within 4..kMaxClaimSides and --ladder-seconds within 0..3600, or an InputError naming it.
 void check_prove_limits(const std::optional<int>& n, double ladder_seconds);
 
+/// The claim file `file` read for a mechanism scene and bound to its names (a polygon claim file
+/// is refused as such).
+std::vector<MechanismDataClaim> mechanism_claims_for(const std::string& file, const MechanismScene& scene,
+                                                     const std::string& scene_path);
+/// Proves the claims over every configuration of the scene's topology; prints; the exit status.
+int run_topology_proof(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
+                       const TopologyProofOptions& options, bool json, bool strict, std::ostream& out);
+
 void add_check_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
 void add_prove_command(CLI::App& app, Action& action);

@@ -95,4 +95,19 @@ ClaimsStatus sampling_status(const TopologySampleRun& run, bool strict) {
   return s;
 }
 
+ClaimsStatus topology_proof_status(const TopologyProofRun& run, bool strict) {
+  ClaimsStatus s;
+  s.strict = strict;
+  bool error = false;
+  for (const TopologyProof& p : run.claims) {
+    const bool sampled_only = p.info.expected == Expectation::Holds && (p.verdict == ProofVerdict::HoldsOnSamples ||
+                                                                        p.verdict == ProofVerdict::HoldsWithProbability);
+    s.as_expected.push_back(p.is_as_expected() && !(strict && sampled_only));
+    error = error || p.verdict == ProofVerdict::Error;
+    if (!s.as_expected.back()) s.exit_status = kClaimFailed;
+  }
+  if (error) s.exit_status = kInternalError;
+  return s;
+}
+
 }  // namespace linkproof::cli

@@ -18,6 +18,7 @@
 #include "count/count_claim.h"
 #include "linkproof/check/check.h"
 #include "numerics/data_check.h"
+#include "proof/mechanism_proof.h"
 #include "proof/mechanism_sampling.h"
 #include "proof/prove.h"
 #include "report/claims_status.h"
@@ -67,5 +68,9 @@ int exit_status(const std::vector<ProofResult>& results, bool strict = false);
 /// expected, except with `strict` (samples are no proof); a claim expected to fail must be
 /// disproved. Exit 1 if one is not as expected.
 ClaimsStatus sampling_status(const TopologySampleRun& run, bool strict = false);
+
+/// Mechanism claims over a topology: as for proofs (a true claim proved, proved_generically or,
+/// not strict, holding on samples; an erratum disproved); 3 if a verdict is Error.
+ClaimsStatus topology_proof_status(const TopologyProofRun& run, bool strict);
 
 }  // namespace linkproof::cli

@@ -1,8 +1,12 @@
 // linkproof prove [--claim ID] [--n N] [--file CLAIMS.yaml] [--ladder-seconds S] [--json] [--strict]
+// linkproof prove --file CLAIMS.yaml --topology MECHANISM_SCENE [--claim ID] [--proof-seconds S]
+//                 [--count K] [--seed S] [--json] [--strict]
+//   mechanism claims over every configuration of the scene's topology (proof/mechanism_proof.h)
 #include <optional>
 
 #include "command.h"
 #include "dijksman1966.h"
+#include "linkproof/io/mechanism_scene.h"
 #include "report/prove_report.h"
 
 namespace linkproof::cli {
@@ -17,9 +21,38 @@ struct ProveArgs {
   int n_max = 0;
   bool json = false;
   bool strict = false;
+  std::string topology;
+  double proof_seconds = 60;
+  int count = 20;
+  std::uint64_t seed = 1;
 };
 
+int run_topology(const ProveArgs& a, std::ostream& out) {
+  if (a.file.empty()) throw InputError("<command line>", "--topology", "needs --file CLAIMS: the mechanism claims to prove");
+  if (a.n) throw InputError("<command line>", "--n", "applies to polygon claims, not to a mechanism topology");
+  if (a.count < 1 || a.count > 100000) throw InputError("<command line>", "--count", "must be between 1 and 100000");
+  const MechanismScene scene = load_mechanism_scene(a.topology);
+  std::vector<MechanismDataClaim> claims = mechanism_claims_for(a.file, scene, a.topology);
+  if (!a.claims.empty()) {
+    std::vector<MechanismDataClaim> chosen;
+    for (const std::string& id : a.claims) {
+      const auto it = std::find_if(claims.begin(), claims.end(), [&](const MechanismDataClaim& c) {
+        return c.info.id == id || (c.info.id.size() > id.size() && c.info.id.ends_with("." + id));
+      });
+      if (it == claims.end()) throw InputError("<command line>", "--claim", "no claim '" + id + "' in " + a.file);
+      chosen.push_back(*it);
+    }
+    claims = std::move(chosen);
+  }
+  TopologyProofOptions o;
+  o.seconds = a.proof_seconds;
+  o.sampling.count = a.count;
+  o.sampling.seed = a.seed;
+  return run_topology_proof(scene, claims, o, a.json, a.strict, out);
+}
+
 int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
+  if (!a.topology.empty()) return run_topology(a, out);
   const ClaimFile file = a.file.empty() ? dijksman1966::claim_file() : load_claim_file(a.file);
   check_prove_limits(a.n, a.ladder_seconds);
   const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
@@ -51,6 +84,15 @@ void add_prove_command(CLI::App& app, Action& action) {
       ->check(seconds_validator());
   p->add_option("--n-max", a.n_max, "stop the per-n ladder at this n")
       ->check(int_range_validator(4, kMaxClaimSides));
+  p->add_option("--topology", a.topology,
+                "prove the mechanism claims of --file over every configuration of this mechanism scene's topology");
+  p->add_option("--proof-seconds", a.proof_seconds,
+                "with --topology: time for the symbolic proof per claim (default 60); past it the claim is judged on "
+                "--count random exact configurations (holds_on_samples)")
+      ->check(seconds_validator(kMaxClaimLadderSeconds));
+  p->add_option("--count", a.count, "with --topology: random exact configurations when no proof is made (default 20)");
+  p->add_option("--seed", a.seed, "with --topology: seed of the counterexample search and the samples (default 1)")
+      ->check(seed_validator());
   p->add_flag("--json", a.json, "print JSON (the contract in docs/claims.md)");
   p->add_flag("--strict", a.strict,
               "only a proof for the claim's whole range is as expected for a true claim (proved_for and "

@@ -15,6 +15,7 @@
 
 #include "core/scalar.h"
 #include "linkproof/mechanism/linkage.h"
+#include "mechanism/joint_geometry.h"
 
 namespace linkproof {
 
@@ -28,7 +29,7 @@ struct MechanismMotion {
 /// Fills joint_v / joint_a from omega, omega_dot, slide, slide_dot (already set) by walking the
 /// spanning tree out from the ground with the formulas above.
 template <class T>
-void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m) {
+void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m, const JointGeometry<T>& geo = {}) {
   const size_t L = static_cast<size_t>(g.link_count());
   // Per link: a reference point O (a joint position) with its velocity and acceleration.
   std::vector<Vec2<T>> origin(L), v(L), a(L);
@@ -46,12 +47,12 @@ void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m) {
     if (link == g.ground()) continue;
     const JointCrossing& c = g.tree_entry(link);
     const LinkageJoint& j = g.joint(c.joint);
-    const Vec2<T> p = vec_from_rational<T>(j.at);
+    const Vec2<T> p = geo.position(g, c.joint);
     Vec2<T> vp, ap;
     point_motion(c.from, p, vp, ap);
     if (const int s = g.sliding_sign(c); s != 0) {
       const size_t jj = static_cast<size_t>(c.joint);
-      const Vec2<T> u = vec_from_rational<T>(j.axis);
+      const Vec2<T> u = geo.direction(g, c.joint);
       const T w_guide = m.omega[static_cast<size_t>(j.links[0])];
       const Vec2<T> dv = m.slide[jj] * u;
       const Vec2<T> da = m.slide_dot[jj] * u + (from_int<T>(2) * w_guide * m.slide[jj]) * perp(u);
@@ -68,7 +69,7 @@ void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m) {
   for (int jn = 0; jn < g.joint_count(); ++jn) {
     const LinkageJoint& j = g.joint(jn);
     // The revolute point is shared; for a prismatic pair report the slider's point.
-    point_motion(j.links[1], vec_from_rational<T>(j.at), m.joint_v[static_cast<size_t>(jn)],
+    point_motion(j.links[1], geo.position(g, jn), m.joint_v[static_cast<size_t>(jn)],
                  m.joint_a[static_cast<size_t>(jn)]);
   }
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "core/symbolic_scalar.h"
 #include "mechanism/curvature.h"
 
 namespace linkproof {
@@ -60,40 +61,76 @@ void bind(Node& n, const MechanismScene& s, const std::string& field) {
   }
 }
 
-MechanismValue number(Rational x) { return {false, std::move(x), 0}; }
-MechanismValue vector_value(const V& v) { return {true, v.x, v.y}; }
-V as_vector(const MechanismValue& v) { return {v.x, v.y}; }
+template <class T>
+using Value = MechanismValueOf<T>;
 
-V position(const Node& n, const MechanismFrame& f) {
-  return n.is_tracer_point ? f.scene.points[static_cast<size_t>(n.index)].at
-                           : f.scene.linkage.joint(n.index).at;
+template <class T>
+Value<T> number(T x) {
+  return {false, std::move(x), from_int<T>(0)};
+}
+template <class T>
+Value<T> vector_value(const Vec2<T>& v) {
+  return {true, v.x, v.y};
+}
+template <class T>
+Vec2<T> as_vector(const Value<T>& v) {
+  return {v.x, v.y};
 }
 
-const LinkField<Rational>& field_of(const Node& n, const MechanismFrame& f) { return f.fields[static_cast<size_t>(n.index)]; }
+template <class T>
+const Vec2<T>& position(const Node& n, const MechanismFrameOf<T>& f) {
+  return n.is_tracer_point ? f.point_at[static_cast<size_t>(n.index)] : f.joint_at[static_cast<size_t>(n.index)];
+}
+
+template <class T>
+const LinkField<T>& field_of(const Node& n, const MechanismFrameOf<T>& f) {
+  return f.fields[static_cast<size_t>(n.index)];
+}
 
 [[noreturn]] void undefined(const Node& n, const std::string& reason) { throw UndefinedQuantity(n.text, reason); }
 
-// |u| of a prismatic axis when it is rational (a unit or Pythagorean direction).
-Rational axis_length(const Node& n, const MechanismFrame& f) {
-  const V& u = f.scene.linkage.joint(n.index).axis;
-  cln::cl_RA root;
-  if (!cln::sqrtp(norm2(u), &root))
-    undefined(n, fmt::format("the axis ({}, {}) of joint '{}' has an irrational length: give it as a rational unit "
-                             "direction (e.g. [3/5, 4/5] or an angle) or compare dot(vel(J, slider, guide), axis)",
-                             format_rational(u.x), format_rational(u.y), n.name));
-  return root;
+// |u| of a prismatic axis: 1 where the frame's axes are unit by construction, else the exact
+// length when it is rational (a unit or Pythagorean direction).
+template <class T>
+T axis_length(const Node& n, const MechanismFrameOf<T>& f) {
+  if (f.unit_axes) return from_int<T>(1);
+  if constexpr (std::is_same_v<T, Rational>) {
+    const V& u = f.scene.linkage.joint(n.index).axis;
+    cln::cl_RA root;
+    if (!cln::sqrtp(norm2(u), &root))
+      undefined(n, fmt::format("the axis ({}, {}) of joint '{}' has an irrational length: give it as a rational unit "
+                               "direction (e.g. [3/5, 4/5] or an angle) or compare dot(vel(J, slider, guide), axis)",
+                               format_rational(u.x), format_rational(u.y), n.name));
+    return root;
+  } else {
+    undefined(n, "the axis length of a symbolic axis that is not a unit vector");
+  }
 }
 
-MechanismValue call(const Node& n, const MechanismFrame& f) {
+// b^e for an integer e (b != 0 when e < 0), by squaring.
+template <class T>
+T integer_power(const T& b, int e) {
+  T result = from_int<T>(1), base = b;
+  for (unsigned k = static_cast<unsigned>(e < 0 ? -e : e); k > 0; k >>= 1) {
+    if (k & 1u) result = result * base;
+    if (k > 1) base = base * base;
+  }
+  return e < 0 ? from_int<T>(1) / result : result;
+}
+
+template <class T>
+Value<T> call(const Node& n, const MechanismFrameOf<T>& f) {
   using Q = MechanismQuantity;
+  using P = PlanePoint<T>;
   const auto& a = n.children;
   const auto value = [&](size_t k) { return evaluate_mechanism_expression(a[k], f); };
   const auto link_motion = [&](bool relative) {
-    const LinkField<Rational>& m = field_of(a[1], f);
-    const V X = position(a[0], f);
-    if (!relative) return RelativePointMotion<Rational>{m.velocity(X), m.acceleration(X)};
+    const LinkField<T>& m = field_of(a[1], f);
+    const Vec2<T>& X = position(a[0], f);
+    if (!relative) return RelativePointMotion<T>{m.velocity(X), m.acceleration(X)};
     return relative_point_motion(m, field_of(a[2], f), X);
   };
+  const auto slide = [&](const std::vector<T>& rates) { return rates[static_cast<size_t>(a[0].index)] * axis_length(a[0], f); };
   switch (n.word->quantity) {
     case Q::Omega: return number(field_of(a[0], f).omega);
     case Q::OmegaRelative: return number(field_of(a[0], f).omega - field_of(a[1], f).omega);
@@ -105,33 +142,30 @@ MechanismValue call(const Node& n, const MechanismFrame& f) {
     case Q::Acceleration: return vector_value(link_motion(false).a);
     case Q::AccelerationRelative: return vector_value(link_motion(true).a);
     case Q::Pole: {
-      const PlanePoint<Rational> p = construct_pole(field_of(a[0], f), field_of(a[1], f), n.text);
-      if (p.kind == PlanePoint<Rational>::Kind::AtInfinity)
-        undefined(n, "the pole is at infinity: omega(L) = omega(M), a relative translation");
+      const P p = construct_pole(field_of(a[0], f), field_of(a[1], f), n.text);
+      if (p.kind == P::Kind::AtInfinity) undefined(n, "the pole is at infinity: omega(L) = omega(M), a relative translation");
       if (!p.is_finite()) undefined(n, p.reason);
       return vector_value(p.at);
     }
     case Q::Centre: {
-      const V X = position(a[0], f);
-      const PlanePoint<Rational> c = construct_curvature_centre(X, link_motion(true), n.text);
-      if (c.kind == PlanePoint<Rational>::Kind::AtInfinity)
+      const P c = construct_curvature_centre(position(a[0], f), link_motion(true), n.text);
+      if (c.kind == P::Kind::AtInfinity)
         undefined(n, "the centre is at infinity: the point is on the inflection circle (v x a = 0)");
       if (!c.is_finite()) undefined(n, c.reason);
       return vector_value(c.at);
     }
-    case Q::SlidingV: return number(f.motion.slide[static_cast<size_t>(a[0].index)] * axis_length(a[0], f));
-    case Q::SlidingA: return number(f.motion.slide_dot[static_cast<size_t>(a[0].index)] * axis_length(a[0], f));
+    case Q::SlidingV: return number(slide(f.motion.slide));
+    case Q::SlidingA: return number(slide(f.motion.slide_dot));
     case Q::Dot: return number(dot(as_vector(value(0)), as_vector(value(1))));
     case Q::Cross: return number(cross(as_vector(value(0)), as_vector(value(1))));
     case Q::Perp: return vector_value(perp(as_vector(value(0))));
     case Q::Norm2: return number(norm2(as_vector(value(0))));
     case Q::Vx: return number(value(0).x);
     case Q::Vy: return number(value(0).y);
-    case Q::Vec: return vector_value(V{value(0).x, value(1).x});
+    case Q::Vec: return vector_value(Vec2<T>{value(0).x, value(1).x});
     case Q::Meet: {
-      const PlanePoint<Rational> p = intersect_lines(as_vector(value(0)), as_vector(value(1)), as_vector(value(2)),
-                                                     as_vector(value(3)), n.text);
-      if (p.kind == PlanePoint<Rational>::Kind::AtInfinity) undefined(n, "the two lines are parallel");
+      const P p = intersect_lines(as_vector(value(0)), as_vector(value(1)), as_vector(value(2)), as_vector(value(3)), n.text);
+      if (p.kind == P::Kind::AtInfinity) undefined(n, "the two lines are parallel");
       if (!p.is_finite()) undefined(n, p.reason);
       return vector_value(p.at);
     }
@@ -140,36 +174,58 @@ MechanismValue call(const Node& n, const MechanismFrame& f) {
   return {};
 }
 
+template <class T>
+std::vector<Vec2<T>> exact_points(const std::vector<MechanismPoint>& points) {
+  std::vector<Vec2<T>> out;
+  for (const MechanismPoint& p : points) out.push_back(vec_from_rational<T>(p.at));
+  return out;
+}
+
+template <class T>
+std::vector<Vec2<T>> exact_joints(const Linkage& g, bool axes) {
+  std::vector<Vec2<T>> out;
+  for (const LinkageJoint& j : g.joints()) out.push_back(vec_from_rational<T>(axes ? j.axis : j.at));
+  return out;
+}
+
 }  // namespace
 
-MechanismFrame::MechanismFrame(const MechanismScene& s, const MechanismMotion<Rational>& m)
-    : scene(s), motion(m), fields(link_fields(s.linkage, m)) {}
+template <class T>
+MechanismFrameOf<T>::MechanismFrameOf(const MechanismScene& s, const MechanismMotion<T>& m)
+    : MechanismFrameOf(s, m, exact_joints<T>(s.linkage, false), exact_points<T>(s.points), exact_joints<T>(s.linkage, true),
+                       false) {}
+
+template <class T>
+MechanismFrameOf<T>::MechanismFrameOf(const MechanismScene& s, const MechanismMotion<T>& m, std::vector<Vec2<T>> joints,
+                                      std::vector<Vec2<T>> points, std::vector<Vec2<T>> axes, bool unit)
+    : scene(s), motion(m), joint_at(std::move(joints)), point_at(std::move(points)), axis(std::move(axes)), unit_axes(unit),
+      fields(link_fields(s.linkage, m, JointGeometry<T>{&joint_at, &axis})) {}
 
 void bind_mechanism_claim(MechanismDataClaim& claim, const MechanismScene& scene) {
   bind(claim.lhs.root(), scene, claim.lhs.field());
   bind(claim.rhs.root(), scene, claim.rhs.field());
 }
 
-MechanismValue evaluate_mechanism_expression(const Node& n, const MechanismFrame& f) {
+template <class T>
+MechanismValueOf<T> evaluate_mechanism_expression(const Node& n, const MechanismFrameOf<T>& f) {
   switch (n.op) {
-    case Node::Op::Constant: return number(n.constant);
+    case Node::Op::Constant: return number(from_rational<T>(n.constant));
     case Node::Op::Name: LINKPROOF_ASSERT(false, "a name evaluated as a value"); return {};
     case Node::Op::Call: return call(n, f);
     case Node::Op::Negate: {
-      MechanismValue v = evaluate_mechanism_expression(n.children[0], f);
+      Value<T> v = evaluate_mechanism_expression(n.children[0], f);
       v.x = -v.x, v.y = -v.y;
       return v;
     }
     case Node::Op::Power: {
-      const Rational b = evaluate_mechanism_expression(n.children[0], f).x;
-      if (n.exponent < 0 && cln::zerop(b))
-        throw UndefinedQuantity(n.children[0].text, "a negative power of 0 (it is 0 here)");
-      return number(cln::expt(b, n.exponent));
+      const T b = evaluate_mechanism_expression(n.children[0], f).x;
+      if (n.exponent < 0 && is_zero(b)) throw UndefinedQuantity(n.children[0].text, "a negative power of 0 (it is 0 here)");
+      return number(integer_power(b, n.exponent));
     }
     default: break;
   }
-  const MechanismValue a = evaluate_mechanism_expression(n.children[0], f);
-  const MechanismValue b = evaluate_mechanism_expression(n.children[1], f);
+  const Value<T> a = evaluate_mechanism_expression(n.children[0], f);
+  const Value<T> b = evaluate_mechanism_expression(n.children[1], f);
   switch (n.op) {
     case Node::Op::Add: return {a.is_vector, a.x + b.x, a.y + b.y};
     case Node::Op::Subtract: return {a.is_vector, a.x - b.x, a.y - b.y};
@@ -178,13 +234,18 @@ MechanismValue evaluate_mechanism_expression(const Node& n, const MechanismFrame
       if (b.is_vector) return {true, a.x * b.x, a.x * b.y};
       return number(a.x * b.x);
     case Node::Op::Divide:
-      if (cln::zerop(b.x)) throw UndefinedQuantity(n.children[1].text, "a divisor that is 0 here");
-      return {a.is_vector, a.x / b.x, a.is_vector ? a.y / b.x : Rational(0)};
+      if (is_zero(b.x)) throw UndefinedQuantity(n.children[1].text, "a divisor that is 0 here");
+      return {a.is_vector, a.x / b.x, a.is_vector ? a.y / b.x : from_int<T>(0)};
     default: break;
   }
   LINKPROOF_ASSERT(false, "an unknown mechanism expression node");
   return {};
 }
+
+template struct MechanismFrameOf<Rational>;
+template struct MechanismFrameOf<GiNaC::ex>;
+template MechanismValueOf<Rational> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<Rational>&);
+template MechanismValueOf<GiNaC::ex> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<GiNaC::ex>&);
 
 ClaimSides<Rational> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrame& f) {
   const auto side = [&](const MechanismExpression& e) {

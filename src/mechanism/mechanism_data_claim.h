@@ -7,7 +7,8 @@
 // link, joint and point names in the same order (a random configuration of its topology,
 // proof/mechanism_sampling.h) uses the same binding.
 //
-// Evaluation (MechanismFrame): every value is an exact rational or a pair of them, from the
+// Evaluation (MechanismFrameOf<T>): every value is a number or a pair of them in T (exact
+// rationals; GiNaC expressions of a topology's symbols for proof/mechanism_proof.h), from the
 // link fields of mechanism/poles.h (v_L(X) = v0_L + omega_L J X, a_L(X) = a0_L + alpha_L J X -
 // omega_L^2 X); a quantity that does not exist (a division by 0, a pole at infinity, parallel
 // lines in meet, the curvature centre of a point at the pole) throws UndefinedQuantity naming it
@@ -22,26 +23,40 @@
 
 namespace linkproof {
 
-/// A value of a mechanism claim expression: a number (x) or a vector (x, y).
-struct MechanismValue {
+/// A value of a mechanism claim expression: a number (x) or a vector (x, y), in T.
+template <class T>
+struct MechanismValueOf {
   bool is_vector = false;
-  Rational x, y;
+  T x, y;
 };
+using MechanismValue = MechanismValueOf<Rational>;
 
-/// What an evaluation reads: the scene and its solved motion.
-struct MechanismFrame {
-  MechanismFrame(const MechanismScene& scene, const MechanismMotion<Rational>& motion);
+/// What an evaluation reads: the scene, its solved motion, and where its joints, tracer points
+/// and axes are in T (by default the scene's exact values; symbols for a proof over a topology).
+template <class T>
+struct MechanismFrameOf {
+  MechanismFrameOf(const MechanismScene& scene, const MechanismMotion<T>& motion);
+  /// Positions and axes given in T. `unit_axes`: every axis has length 1 by construction (the
+  /// symbolic axes (c, s) of a proof, read on c^2 + s^2 = 1), so sliding rates need no |u|.
+  MechanismFrameOf(const MechanismScene& scene, const MechanismMotion<T>& motion, std::vector<Vec2<T>> joint_at,
+                   std::vector<Vec2<T>> point_at, std::vector<Vec2<T>> axis, bool unit_axes);
   const MechanismScene& scene;
-  const MechanismMotion<Rational>& motion;
-  std::vector<LinkField<Rational>> fields;  ///< per link (mechanism/poles.h)
+  const MechanismMotion<T>& motion;
+  std::vector<Vec2<T>> joint_at, point_at, axis;  ///< per joint, per tracer point, per joint
+  bool unit_axes = false;
+  std::vector<LinkField<T>> fields;  ///< per link (mechanism/poles.h)
 };
+using MechanismFrame = MechanismFrameOf<Rational>;
 
 /// Resolves every name of both sides against `scene` (see the header comment); throws
 /// InputError naming the claim, the field and the name's file:line:column.
 void bind_mechanism_claim(MechanismDataClaim& claim, const MechanismScene& scene);
 
 /// The value of a bound expression; throws UndefinedQuantity where a quantity does not exist.
-MechanismValue evaluate_mechanism_expression(const MechanismNode& node, const MechanismFrame& frame);
+/// Instantiated for Rational and GiNaC::ex (where "does not exist" means "for every
+/// configuration": a divisor that is identically 0).
+template <class T>
+MechanismValueOf<T> evaluate_mechanism_expression(const MechanismNode& node, const MechanismFrameOf<T>& frame);
 
 /// The comparisons of a bound claim: "total" for a number claim, "x" and "y" for a vector claim.
 ClaimSides<Rational> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrame& frame);

@@ -65,11 +65,13 @@ void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inpu
 }
 
 /// Solves velocity then acceleration. `A` is the constraint matrix; `acceleration_rhs(qdot)`
-/// returns h(q-dot) (constraint_count entries). `values`: the inputs' rates in T (optional).
+/// returns h(q-dot) (constraint_count entries). `values`: the inputs' rates in T (optional);
+/// `geo`: where the joints are for the joints' velocities (default: the linkage's positions).
 template <class T, class AccelerationRhs>
 MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<MechanismInput>& inputs,
                                      const DenseMatrix<T>& A, AccelerationRhs acceleration_rhs,
-                                     const std::string& source, const std::vector<InputValue<T>>* values = nullptr) {
+                                     const std::string& source, const std::vector<InputValue<T>>* values = nullptr,
+                                     const JointGeometry<T>& geo = {}) {
   const size_t N = static_cast<size_t>(g.unknown_count());
   MechanismSolution<T> s;
   s.rank = solve_linear_system<T>(A, std::vector<T>(A.size(), from_int<T>(0))).rank;
@@ -115,7 +117,7 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
     m.slide.push_back(c < 0 ? zero : s.qdot[static_cast<size_t>(c)]);
     m.slide_dot.push_back(c < 0 ? zero : s.qddot[static_cast<size_t>(c)]);
   }
-  complete_joint_motion(g, m);
+  complete_joint_motion(g, m, geo);
   return s;
 }
 

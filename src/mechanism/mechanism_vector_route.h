@@ -11,29 +11,30 @@
 //             + sum (+-) (sigma-ddot u + 2 omega_guide sigma-dot J u) = 0   (Coriolis, docs/conventions.md §C)
 // and per prismatic pair omega_slider - omega_guide = 0 (and its derivative).
 // No angles appear: with rational joints and rates every entry is rational.
-// Both builders take the joint positions from the linkage (exact, converted to T), or from
-// `at` when given (one per joint, already in T: e.g. Tracked values whose radius is the
-// uncertainty of recorded positions, cli check-data).
+// Both builders read positions and axes through a JointGeometry (mechanism/joint_geometry.h):
+// the linkage's exact values converted to T, or values already in T (Tracked data, symbols).
 #pragma once
 
 #include <vector>
 
 #include "core/scalar.h"
 #include "linkproof/mechanism/linkage.h"
+#include "mechanism/joint_geometry.h"
 #include "mechanism/linear_system.h"
 
 namespace linkproof {
 
-/// The constraint matrix A (Linkage::constraint_count() x unknown_count()).
-/// The loop vector from joint `from` to joint `to`, exact or from `at` (see above).
+/// The loop vector from joint `from` to joint `to` (exact differences when the geometry is the
+/// linkage's own).
 template <class T>
-Vec2<T> joint_difference(const Linkage& g, int from, int to, const std::vector<Vec2<T>>* at) {
-  if (at) return (*at)[static_cast<size_t>(to)] - (*at)[static_cast<size_t>(from)];
+Vec2<T> joint_difference(const Linkage& g, int from, int to, const JointGeometry<T>& geo) {
+  if (geo.at) return geo.position(g, to) - geo.position(g, from);
   return vec_from_rational<T>(g.joint(to).at - g.joint(from).at);
 }
 
+/// The constraint matrix A (Linkage::constraint_count() x unknown_count()).
 template <class T>
-DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const std::vector<Vec2<T>>* at = nullptr) {
+DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const JointGeometry<T>& geo = {}) {
   const size_t N = static_cast<size_t>(g.unknown_count());
   DenseMatrix<T> A;
   for (const LinkageLoop& loop : g.loops()) {
@@ -42,13 +43,13 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const std::vector<
     for (size_t i = 0; i < k; ++i) {
       const JointCrossing& c = loop.crossings[i];
       const JointCrossing& next = loop.crossings[(i + 1) % k];
-      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, at);
+      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, geo);
       if (const int col = g.unknown_of_link(c.to); col >= 0) {
         rx[static_cast<size_t>(col)] = rx[static_cast<size_t>(col)] - r.y;  // J r = (-r_y, r_x)
         ry[static_cast<size_t>(col)] = ry[static_cast<size_t>(col)] + r.x;
       }
       if (const int s = g.sliding_sign(c); s != 0) {
-        const Vec2<T> u = vec_from_rational<T>(g.joint(c.joint).axis);
+        const Vec2<T> u = geo.direction(g, c.joint);
         const size_t col = static_cast<size_t>(g.unknown_of_joint(c.joint));
         rx[col] = rx[col] + from_int<T>(s) * u.x;
         ry[col] = ry[col] + from_int<T>(s) * u.y;
@@ -72,7 +73,7 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const std::vector<
 /// wrong variant, for the claim that they are needed (docs/conventions.md §C).
 template <class T>
 std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T>& qdot, bool coriolis = true,
-                                          const std::vector<Vec2<T>>* at = nullptr) {
+                                          const JointGeometry<T>& geo = {}) {
   const auto omega = [&](int link) {
     const int c = g.unknown_of_link(link);
     return c < 0 ? from_int<T>(0) : qdot[static_cast<size_t>(c)];
@@ -84,13 +85,13 @@ std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T
     for (size_t i = 0; i < k; ++i) {
       const JointCrossing& c = loop.crossings[i];
       const JointCrossing& next = loop.crossings[(i + 1) % k];
-      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, at);
+      const Vec2<T> r = joint_difference<T>(g, c.joint, next.joint, geo);
       const T w = omega(c.to);
       acc = acc + (w * w) * r;
       if (const int s = g.sliding_sign(c); s != 0 && coriolis) {
         const LinkageJoint& j = g.joint(c.joint);
         const T sd = qdot[static_cast<size_t>(g.unknown_of_joint(c.joint))];
-        acc = acc - (from_int<T>(2 * s) * omega(j.links[0]) * sd) * perp(vec_from_rational<T>(j.axis));
+        acc = acc - (from_int<T>(2 * s) * omega(j.links[0]) * sd) * perp(geo.direction(g, c.joint));
       }
     }
     h.push_back(acc.x);

@@ -84,20 +84,20 @@ struct LinkField {
 
 /// The field of every link, from a solved motion (joint_v/joint_a filled).
 template <class T>
-std::vector<LinkField<T>> link_fields(const Linkage& g, const MechanismMotion<T>& m) {
+std::vector<LinkField<T>> link_fields(const Linkage& g, const MechanismMotion<T>& m, const JointGeometry<T>& geo = {}) {
   std::vector<LinkField<T>> out(static_cast<size_t>(g.link_count()));
   std::vector<bool> done(out.size(), false);
   const Vec2<T> zero{from_int<T>(0), from_int<T>(0)};
   for (size_t l = 0; l < out.size(); ++l) out[l] = {m.omega[l], m.omega_dot[l], zero, zero};
   for (int jn = 0; jn < g.joint_count(); ++jn) {
     const LinkageJoint& j = g.joint(jn);
-    const Vec2<T> X = vec_from_rational<T>(j.at);
+    const Vec2<T> X = geo.position(g, jn);
     for (int s = 0; s < 2; ++s) {
       const size_t l = static_cast<size_t>(j.links[s]);
       if (done[l]) continue;
       Vec2<T> v = m.joint_v[static_cast<size_t>(jn)], a = m.joint_a[static_cast<size_t>(jn)];
       if (j.type == JointType::Prismatic && s == 0) {  // joint_v/a are the slider's point
-        const Vec2<T> u = vec_from_rational<T>(j.axis);
+        const Vec2<T> u = geo.direction(g, jn);
         const T sd = m.slide[static_cast<size_t>(jn)];
         v = v - sd * u;
         a = a - (m.slide_dot[static_cast<size_t>(jn)] * u + (from_int<T>(2) * m.omega[l] * sd) * perp(u));

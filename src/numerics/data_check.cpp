@@ -194,8 +194,8 @@ void check_sample(const MechanismScene& scene, const MotionSample& s, SampleChec
   std::vector<TD> w_radius, a_radius, v_radius, vd_radius;
   try {
     const MechanismSolution<TD> bounded = solve_mechanism<TD>(
-        g, inputs, rigid_body_constraint_matrix<TD>(g, &at),
-        [&](const std::vector<TD>& qd) { return rigid_body_acceleration_rhs<TD>(g, qd, true, &at); }, source, &values);
+        g, inputs, rigid_body_constraint_matrix<TD>(g, JointGeometry<TD>{&at}),
+        [&](const std::vector<TD>& qd) { return rigid_body_acceleration_rhs<TD>(g, qd, true, JointGeometry<TD>{&at}); }, source, &values);
     w_radius = bounded.motion.omega;
     a_radius = bounded.motion.omega_dot;
     v_radius = bounded.motion.slide;

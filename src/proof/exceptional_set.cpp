@@ -1,6 +1,7 @@
 #include "exceptional_set.h"
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <unordered_set>
 #include <utility>
@@ -30,7 +31,7 @@ std::vector<ex> irreducible_factors(const ex& p) {
 
 bool same_up_to_constant(const ex& a, const ex& b) { return GiNaC::is_exactly_a<GiNaC::numeric>(GiNaC::normal(a / b)); }
 
-using Named = std::vector<std::pair<ex, std::string>>;
+using Named = NamedDegeneracies;
 
 /// Named degeneracies of conventions §A6 as polynomials in the symbolic polygon's coordinates: of the
 /// sides (cheap), or of the construction's points (built only if a factor is still unnamed).
@@ -99,9 +100,9 @@ std::vector<ex> divisors_in(const std::vector<ex>& expressions) {
   return out;
 }
 
-std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const std::vector<ex>& divisors,
-                                             const SideNames& names, const GiNaC::exmap* l_as_j,
-                                             RationalNormalizer& normalizer) {
+std::vector<NamedFactor> divisor_factors(const std::vector<ex>& divisors,
+                                         const std::vector<std::function<NamedDegeneracies()>>& named_lists,
+                                         RationalNormalizer& normalizer, bool all_meanings) {
   // The divisors' numerators, each once.
   std::vector<ex> rest;
   for (const ex& d : divisors) {
@@ -111,8 +112,10 @@ std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const 
   }
   // Named factors are divided out exactly (cheap); only what is left is factored (factoring the
   // large numerators of the construction's divisors as a whole is what costs).
-  std::vector<ex> factors;
-  std::vector<std::string> meanings;
+  std::vector<NamedFactor> factors;
+  const auto known = [&factors](const ex& f) {
+    return std::any_of(factors.begin(), factors.end(), [&](const NamedFactor& g) { return same_up_to_constant(f, g.factor); });
+  };
   // A degeneracy with no common factor with any numerator divides none of them: not factored.
   const auto shares_a_factor = [&rest](const ex& poly) {
     const ex h = GiNaC::expand(poly);
@@ -133,29 +136,41 @@ std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const 
     for (ex& p : rest)
       for (const auto& named_factor : named) {
         const ex& g = named_factor.first;  // not a structured binding: clang 14 cannot capture one
-        const std::string& m = named_factor.second;
         ex q;
         bool used = false;
         while (!GiNaC::is_exactly_a<GiNaC::numeric>(p) && GiNaC::divide(p, g, q)) {
           p = q;
           used = true;
         }
-        if (used && std::none_of(factors.begin(), factors.end(), [&](const ex& f) { return same_up_to_constant(f, g); })) {
-          factors.push_back(g);
-          meanings.push_back(m);
-        }
+        if (used && !known(g)) factors.push_back({g, named_factor.second});
       }
+    // A factor already taken out that another degeneracy also divides.
+    if (all_meanings)
+      for (NamedFactor& f : factors)
+        for (const auto& [g, meaning] : named)
+          if (f.meaning.find(meaning) == std::string::npos && same_up_to_constant(f.factor, g)) f.meaning += "; " + meaning;
     rest.erase(std::remove_if(rest.begin(), rest.end(), [](const ex& p) { return GiNaC::is_exactly_a<GiNaC::numeric>(p); }),
                rest.end());
   };
-  strip(side_degeneracies(c, names));
-  if (!rest.empty()) strip(construction_degeneracies(c, names, normalizer));
+  for (const auto& list : named_lists) {
+    if (rest.empty()) break;
+    strip(list());
+  }
   for (const ex& p : rest)
     for (const ex& f : irreducible_factors(p))
-      if (std::none_of(factors.begin(), factors.end(), [&](const ex& g) { return same_up_to_constant(f, g); })) {
-        factors.push_back(f);
-        meanings.emplace_back();
-      }
+      if (!known(f)) factors.push_back({f, ""});
+  return factors;
+}
+
+std::vector<ExceptionalSet> exceptional_sets(const PolygonContext<ex>& c, const std::vector<ex>& divisors,
+                                             const SideNames& names, const GiNaC::exmap* l_as_j,
+                                             RationalNormalizer& normalizer) {
+  const std::vector<NamedFactor> named = divisor_factors(
+      divisors, {[&] { return side_degeneracies(c, names); }, [&] { return construction_degeneracies(c, names, normalizer); }},
+      normalizer);
+  std::vector<ex> factors;
+  std::vector<std::string> meanings;
+  for (const NamedFactor& f : named) factors.push_back(f.factor), meanings.push_back(f.meaning);
   std::vector<ExceptionalSet> out;
   std::vector<std::string> kept;
   for (size_t i = 0; i < factors.size(); ++i) {

@@ -4,6 +4,9 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "claims/polygon_context.h"
@@ -17,6 +20,24 @@ namespace linkproof::proof_detail {
 /// powers, found by walking each expression once (shared subexpressions visited once). normal()
 /// would cancel some of them (x/x = 1); that is why they are read off the unsimplified trees.
 std::vector<GiNaC::ex> divisors_in(const std::vector<GiNaC::ex>& expressions);
+
+/// Polynomials whose zero sets have a name (a degeneracy), in the proof's symbols.
+using NamedDegeneracies = std::vector<std::pair<GiNaC::ex, std::string>>;
+
+/// An irreducible factor of a divisor, and the name of the degeneracy it divides ("" if none).
+struct NamedFactor {
+  GiNaC::ex factor;
+  std::string meaning;
+};
+
+/// The irreducible factors of the divisors' numerators (up to constants, each once). Each list of
+/// named degeneracies, built only while some numerator still has an unnamed part, names the
+/// factors it shares with them (found by exact division, so that only what is left is factored).
+/// `all_meanings`: a factor that several degeneracies share is named by all of them ("; "),
+/// else by the first.
+std::vector<NamedFactor> divisor_factors(const std::vector<GiNaC::ex>& divisors,
+                                         const std::vector<std::function<NamedDegeneracies()>>& named_lists,
+                                         RationalNormalizer& normalizer, bool all_meanings = false);
 
 /// The irreducible factors of the divisors' numerators (up to constants, each once), named with
 /// the sides as `names` prints them. With `l_as_j` (the base of a proof for every n, where input

@@ -10,6 +10,7 @@
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
 #include "mechanism/mechanism_vector_route.h"
+#include "proof/topology_layout.h"
 
 namespace linkproof {
 
@@ -19,51 +20,12 @@ namespace {
 const Vec2<Rational> kUnitDirections[] = {
     {1, 0}, {Rational(3) / 5, Rational(4) / 5}, {Rational(5) / 13, Rational(12) / 13}, {Rational(8) / 17, Rational(15) / 17}};
 
-// The coordinates of a configuration that are drawn and shrunk: one position per group of
-// coincident joints and points, one axis per prismatic joint, two rates per input.
-struct Layout {
-  std::vector<int> joint_group, point_group;  // group of each joint, of each tracer point
-  int groups = 0;
-};
+using Layout = TopologyLayout;
 
-Layout layout_of(const MechanismScene& s) {
-  Layout out;
-  std::vector<Vec2<Rational>> seen;
-  const auto group = [&](const Vec2<Rational>& p) {
-    for (size_t k = 0; k < seen.size(); ++k)
-      if (seen[k].x == p.x && seen[k].y == p.y) return static_cast<int>(k);
-    seen.push_back(p);
-    return static_cast<int>(seen.size() - 1);
-  };
-  for (const LinkageJoint& j : s.linkage.joints()) out.joint_group.push_back(group(j.at));
-  for (const MechanismPoint& p : s.points) out.point_group.push_back(group(p.at));
-  out.groups = static_cast<int>(seen.size());
-  return out;
-}
+using Config = TopologyValues;
 
-// The values of one configuration, in the layout's order.
-struct Config {
-  std::vector<Vec2<Rational>> positions;  // per group
-  std::vector<Vec2<Rational>> axes;       // per joint (revolute: unused)
-  std::vector<Rational> rate, rate_dot;   // per input
-};
-
-MechanismScene build_scene(const MechanismScene& topology, const Layout& layout, const Config& c,
-                           const std::string& name) {
-  MechanismScene s;
-  s.name = name;
-  s.source = name + ".yaml";
-  std::vector<LinkageJoint> joints = topology.linkage.joints();
-  for (size_t j = 0; j < joints.size(); ++j) {
-    joints[j].at = c.positions[static_cast<size_t>(layout.joint_group[j])];
-    if (joints[j].type == JointType::Prismatic) joints[j].axis = c.axes[j];
-  }
-  s.linkage = Linkage(topology.linkage.link_names(), topology.linkage.ground(), std::move(joints));
-  s.inputs = topology.inputs;
-  for (size_t k = 0; k < s.inputs.size(); ++k) s.inputs[k].rate = c.rate[k], s.inputs[k].rate_dot = c.rate_dot[k];
-  s.points = topology.points;
-  for (size_t p = 0; p < s.points.size(); ++p) s.points[p].at = c.positions[static_cast<size_t>(layout.point_group[p])];
-  return s;
+MechanismScene build_scene(const MechanismScene& topology, const Layout& layout, const Config& c, const std::string& name) {
+  return topology_configuration(topology, layout, c, name);
 }
 
 Rational random_rate(SplitMix64& rng, bool nonzero) {
@@ -75,7 +37,7 @@ Rational random_rate(SplitMix64& rng, bool nonzero) {
 Config random_config(const MechanismScene& topology, const Layout& layout, std::uint64_t seed, int index, int range) {
   SplitMix64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index) * 0xBF58476D1CE4E5B9ull + 0x51ull);
   Config c;
-  for (int g = 0; g < layout.groups; ++g) c.positions.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});
+  for (int g = 0; g < layout.groups(); ++g) c.positions.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});
   for (const LinkageJoint& j : topology.linkage.joints()) {
     Vec2<Rational> u = kUnitDirections[rng.uniform(0, 3)];
     if (rng.uniform(0, 1)) u = {u.y, u.x};
@@ -235,7 +197,7 @@ bool SampleResult::is_as_expected() const {
 
 MechanismScene random_topology_configuration(const MechanismScene& scene, std::uint64_t seed, int index,
                                              int coordinate_range) {
-  const Layout layout = layout_of(scene);
+  const Layout layout = topology_layout(scene);
   return build_scene(scene, layout, random_config(scene, layout, seed, index, coordinate_range),
                      fmt::format("{}-sample-{}", scene.name, index));
 }
@@ -247,7 +209,7 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
   TopologySampleRun run;
   run.topology = scene.name;
   run.options = o;
-  const Layout layout = layout_of(scene);
+  const Layout layout = topology_layout(scene);
   for (const MechanismDataClaim& c : claims) {
     SampleResult r;
     r.info = c.info;

@@ -124,6 +124,7 @@ std::string to_string(ProofVerdict v) {
     case ProofVerdict::ProvedFor: return "proved_for";
     case ProofVerdict::Disproved: return "disproved";
     case ProofVerdict::HoldsOnSamples: return "holds_on_samples";
+    case ProofVerdict::HoldsWithProbability: return "holds_with_probability";
     case ProofVerdict::Error: return "error";
   }
   return "error";
@@ -136,6 +137,7 @@ bool ProofResult::is_as_expected() const {
     case ProofVerdict::ProvedGenerically: return true;
     case ProofVerdict::ProvedFor:
     case ProofVerdict::HoldsOnSamples: return true;
+    case ProofVerdict::HoldsWithProbability: return true;
     case ProofVerdict::Disproved:
     case ProofVerdict::Error: return false;
   }

@@ -33,7 +33,9 @@
 
 namespace linkproof {
 
-enum class ProofVerdict { Proved, ProvedGenerically, ProvedFor, Disproved, HoldsOnSamples, Error };
+/// HoldsWithProbability: a randomized identity test (mechanism claims over a topology,
+/// proof/mechanism_proof.h) with a stated bound on the chance that a false claim passes it.
+enum class ProofVerdict { Proved, ProvedGenerically, ProvedFor, Disproved, HoldsOnSamples, HoldsWithProbability, Error };
 std::string to_string(ProofVerdict v);
 
 struct ExceptionalSet {

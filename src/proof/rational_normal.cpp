@@ -1,5 +1,10 @@
 #include "rational_normal.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
 namespace linkproof::proof_detail {
 
 namespace {
@@ -23,31 +28,40 @@ Fraction make(const ex& num, const ex& den, bool polynomial) {
   return {num, den, polynomial};
 }
 
-/// a/b + c/d over the common denominator, not yet cancelled.
-Fraction sum(const Fraction& a, const Fraction& b) {
+double terms(const ex& e) { return GiNaC::is_exactly_a<GiNaC::add>(e) ? static_cast<double>(e.nops()) : 1.0; }
+
+using SizeCheck = std::function<void(const ex&, const ex&)>;
+
+/// a/b + c/d over the common denominator, not yet cancelled (`cancel`: divide out gcd(b, d)).
+Fraction sum(const Fraction& a, const Fraction& b, bool cancel, const SizeCheck& check) {
   const bool poly = a.polynomial && b.polynomial;
   if (b.num.is_zero()) return a;
   if (a.num.is_zero()) return b;
   if (a.den.is_equal(b.den)) return make(GiNaC::expand(a.num + b.num), a.den, poly);
   ex ca, cb;  // a.den = g ca, b.den = g cb
-  split_gcd(a.den, b.den, poly, ca, cb);
+  split_gcd(a.den, b.den, poly && cancel, ca, cb);
+  check(a.num, cb);
+  check(b.num, ca);
+  check(a.den, cb);
   return make(GiNaC::expand(a.num * cb + b.num * ca), GiNaC::expand(a.den * cb), poly);
 }
 
-/// (a/b)(c/d), with the cross gcds cancelled.
-Fraction product(const Fraction& a, const Fraction& b) {
+/// (a/b)(c/d), with the cross gcds cancelled if `cancel`.
+Fraction product(const Fraction& a, const Fraction& b, bool cancel, const SizeCheck& check) {
   const bool poly = a.polynomial && b.polynomial;
   if (a.num.is_zero() || b.num.is_zero()) return make(0, 1, poly);
   ex an, bd, bn, ad;
-  split_gcd(a.num, b.den, poly, an, bd);
-  split_gcd(b.num, a.den, poly, bn, ad);
+  split_gcd(a.num, b.den, poly && cancel, an, bd);
+  split_gcd(b.num, a.den, poly && cancel, bn, ad);
+  check(an, bn);
+  check(ad, bd);
   return make(GiNaC::expand(an * bn), GiNaC::expand(ad * bd), poly);
 }
 
-Fraction cancelled(const Fraction& f) {
+Fraction cancelled(const Fraction& f, bool cancel) {
   if (f.num.is_zero()) return make(0, 1, f.polynomial);
   ex n, d;
-  split_gcd(f.num, f.den, f.polynomial, n, d);
+  split_gcd(f.num, f.den, f.polynomial && cancel, n, d);
   return make(n, d, f.polynomial);
 }
 
@@ -56,6 +70,7 @@ Fraction cancelled(const Fraction& f) {
 const Fraction& RationalNormalizer::normal(const ex& e) {
   const auto it = memo_.find(e);
   if (it != memo_.end()) return it->second;
+  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out"};
   Fraction f = compute(e);
   return memo_.emplace(e, std::move(f)).first->second;
 }
@@ -63,14 +78,15 @@ const Fraction& RationalNormalizer::normal(const ex& e) {
 Fraction RationalNormalizer::compute(const ex& e) {
   if (GiNaC::is_a<GiNaC::symbol>(e)) return make(e, 1, true);
   if (GiNaC::is_exactly_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational()) return make(e, 1, true);
+  const SizeCheck size_check = [this](const ex& a, const ex& b) { check_product_size(a, b); };
   if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
     Fraction acc = make(0, 1, true);
-    for (size_t i = 0; i < e.nops(); ++i) acc = sum(acc, normal(e.op(i)));
-    return cancelled(acc);
+    for (size_t i = 0; i < e.nops(); ++i) acc = sum(acc, normal(e.op(i)), cancel_, size_check);
+    return cancelled(acc, cancel_);
   }
   if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
     Fraction acc = make(1, 1, true);
-    for (size_t i = 0; i < e.nops(); ++i) acc = product(acc, normal(e.op(i)));
+    for (size_t i = 0; i < e.nops(); ++i) acc = product(acc, normal(e.op(i)), cancel_, size_check);
     return acc;
   }
   if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1)) &&
@@ -78,6 +94,9 @@ Fraction RationalNormalizer::compute(const ex& e) {
     const Fraction& b = normal(e.op(0));
     const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
     if (k.is_zero()) return make(1, 1, true);
+    const int exponent = k.is_positive() ? k.to_int() : -k.to_int();
+    check_product_size(b.num, b.num, exponent);
+    check_product_size(b.den, b.den, exponent);
     if (k.is_positive()) return make(GiNaC::expand(GiNaC::pow(b.num, k)), GiNaC::expand(GiNaC::pow(b.den, k)), b.polynomial);
     if (b.num.is_zero()) throw GiNaC::pole_error("RationalNormalizer: division by an identically zero expression", 1);
     return make(GiNaC::expand(GiNaC::pow(b.den, -k)), GiNaC::expand(GiNaC::pow(b.num, -k)), b.polynomial);
@@ -86,6 +105,14 @@ Fraction RationalNormalizer::compute(const ex& e) {
   // own normal form, kept opaque (no gcd is taken with it).
   const ex nd = GiNaC::normal(e).numer_denom();
   return make(GiNaC::expand(nd.op(0)), GiNaC::expand(nd.op(1)), false);
+}
+
+void RationalNormalizer::check_product_size(const ex& a, const ex& b, int power) const {
+  if (term_limit_ <= 0) return;
+  // An upper bound of the expanded terms: the product of the factors' term counts.
+  const double n = power == 1 ? terms(a) * terms(b) : std::pow(terms(a), power);
+  if (n > term_limit_)
+    throw NormalizerOutOfTime{fmt::format("an expansion of up to {:.3g} terms exceeds the limit of {:.3g}", n, term_limit_)};
 }
 
 GiNaC::ex RationalNormalizer::numerator(const ex& e) {

@@ -19,6 +19,9 @@
 
 #include <ginac/ginac.h>
 
+#include <chrono>
+#include <optional>
+#include <string>
 #include <unordered_map>
 
 #include "core/modular_point.h"
@@ -31,8 +34,25 @@ struct Fraction {
   bool polynomial = true;  ///< false if num or den holds an opaque part (no gcd is taken then)
 };
 
+/// Thrown by a RationalNormalizer past its deadline, or about to expand a product of more terms
+/// than its limit (one such expansion could outlast any deadline): `why` says which.
+struct NormalizerOutOfTime {
+  std::string why;
+};
+
 class RationalNormalizer {
  public:
+  /// `cancel`: take gcds to keep fractions reduced (the default). Without, sums and products
+  /// only multiply out (a/b + c/d = (ad + cb)/(bd) unless b = d): the numerator is still zero
+  /// exactly when the expression is, and no multivariate gcd is ever computed (for expressions
+  /// whose denominators are few and known, e.g. the mechanism proofs', gcds cost the most).
+  explicit RationalNormalizer(bool cancel = true) : cancel_(cancel) {}
+  /// From now on, normalising a node not seen before after `deadline` throws NormalizerOutOfTime.
+  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
+  /// From now on, a product whose expansion may have more than `terms` terms throws
+  /// NormalizerOutOfTime instead of being expanded.
+  void set_term_limit(double terms) { term_limit_ = terms; }
+
   /// The normal form of e (throws GiNaC::pole_error if a denominator is identically 0).
   const Fraction& normal(const GiNaC::ex& e);
   /// The numerator of e's normal form (expanded; GiNaC's normal() where e is not a rational
@@ -47,6 +67,10 @@ class RationalNormalizer {
   Fraction compute(const GiNaC::ex& e);
   std::unordered_map<GiNaC::ex, Fraction, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
   ModularPoint point_;  // a quick rejection before the symbolic normal form
+  std::optional<std::chrono::steady_clock::time_point> deadline_;
+  bool cancel_ = true;
+  double term_limit_ = 0;  // 0: none
+  void check_product_size(const GiNaC::ex& a, const GiNaC::ex& b, int power = 1) const;
 };
 
 }  // namespace linkproof::proof_detail

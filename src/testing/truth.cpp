@@ -23,7 +23,7 @@ MechanismSolution<T> solve_vector_route(const MechanismScene& s) {
   const Linkage& g = s.linkage;
   std::vector<Vec2<T>> at;
   for (const auto& j : g.joints()) at.push_back(vec_from_rational<T>(j.at));
-  const std::vector<Vec2<T>>* positions = ScalarTraits<T>::is_exact ? nullptr : &at;
+  const JointGeometry<T> positions{ScalarTraits<T>::is_exact ? nullptr : &at};
   return solve_mechanism<T>(
       g, s.inputs, rigid_body_constraint_matrix<T>(g, positions),
       [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, positions); }, s.source);

@@ -1,0 +1,673 @@
+#include "proof/mechanism_proof.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+#include <functional>
+#include <memory>
+#include <set>
+
+#include "check/random_polygon.h"
+#include "core/symbolic_scalar.h"
+#include "linkproof/io/mechanism_scene.h"
+#include "mechanism/mechanism_data_claim.h"
+#include "mechanism/mechanism_solve.h"
+#include "mechanism/mechanism_vector_route.h"
+#include "proof/exceptional_set.h"
+#include "proof/rational_normal.h"
+#include "proof/topology_layout.h"
+
+namespace linkproof {
+
+namespace {
+
+using GiNaC::ex;
+using Clock = std::chrono::steady_clock;
+using proof_detail::NamedDegeneracies;
+using proof_detail::RationalNormalizer;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The free coordinates of the topology as GiNaC symbols (see the header comment).
+struct SymbolicConfiguration {
+  std::vector<std::string> names;
+  std::vector<Vec2<ex>> joint_at, point_at, axis;  // per joint, per point, per joint
+  std::vector<std::pair<ex, ex>> unit_axes;        // (c, s) with c^2 + s^2 = 1
+  std::vector<std::string> relations;
+  std::vector<InputValue<ex>> inputs;
+};
+
+class SymbolNames {
+ public:
+  ex make(const std::string& prefix, const std::string& name) {
+    std::string base = prefix + "_";
+    for (char ch : name) base += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    std::string unique = base;
+    for (int k = 2; !used_.insert(unique).second; ++k) unique = fmt::format("{}_{}", base, k);
+    names.push_back(unique);
+    return GiNaC::symbol(unique);
+  }
+  std::vector<std::string> names;
+
+ private:
+  std::set<std::string> used_;
+};
+
+SymbolicConfiguration symbolic_configuration(const MechanismScene& s) {
+  const TopologyLayout layout = topology_layout(s);
+  const Linkage& g = s.linkage;
+  SymbolNames names;
+  SymbolicConfiguration c;
+  std::vector<Vec2<ex>> group;
+  for (const std::string& n : layout.group_name) {
+    const ex x = names.make("x", n), y = names.make("y", n);
+    group.push_back({x, y});
+  }
+  for (int j = 0; j < g.joint_count(); ++j) {
+    c.joint_at.push_back(group[static_cast<size_t>(layout.joint_group[static_cast<size_t>(j)])]);
+    if (g.joint(j).type != JointType::Prismatic) {
+      c.axis.push_back({0, 0});
+      continue;
+    }
+    const ex cj = names.make("c", g.joint(j).name), sj = names.make("s", g.joint(j).name);
+    c.axis.push_back({cj, sj});
+    c.unit_axes.emplace_back(cj, sj);
+    c.relations.push_back(fmt::format("{}^2 + {}^2 = 1", to_text(cj), to_text(sj)));
+  }
+  for (size_t p = 0; p < s.points.size(); ++p) c.point_at.push_back(group[static_cast<size_t>(layout.point_group[p])]);
+  for (const MechanismInput& in : s.inputs) {
+    const bool link = in.kind == MechanismInput::Kind::Link;
+    const std::string who = link ? g.link_names()[static_cast<size_t>(in.index)] : g.joint(in.index).name;
+    const ex rate = names.make(link ? "w" : "v", who), rate_dot = names.make(link ? "wd" : "vd", who);
+    c.inputs.push_back({rate, rate_dot});
+  }
+  c.names = names.names;
+  return c;
+}
+
+// The motion of every configuration at once (the header comment, step 1).
+struct SymbolicMotion {
+  std::string note;  // why there is none
+  bool singular_everywhere = false;
+  int unknowns = 0;
+  ex det;
+  GiNaC::symbol delta{"delta"};  // stands for 1 / det A (see clear_delta)
+  MechanismMotion<ex> motion;
+  // The same linkage with every rate a free symbol (omega_L, alpha_L, sd_J, sdd_J), and the map
+  // from those symbols to the solved rates: a claim that holds for every value of them needs
+  // no loop closure (a rigid-body identity).
+  MechanismMotion<ex> free_rates;
+  GiNaC::exmap solved_rates;
+};
+
+ex determinant(const std::vector<std::vector<ex>>& rows, size_t skip_row, size_t skip_col) {
+  const size_t n = rows.size() - (skip_row < rows.size() ? 1 : 0);
+  GiNaC::matrix m(static_cast<unsigned>(n), static_cast<unsigned>(n));
+  unsigned r = 0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (i == skip_row) continue;
+    unsigned c = 0;
+    for (size_t k = 0; k < rows[i].size(); ++k) {
+      if (k == skip_col) continue;
+      m(r, c++) = rows[i][k];
+    }
+    ++r;
+  }
+  return n == 0 ? ex(1) : GiNaC::expand(m.determinant());
+}
+
+SymbolicMotion solve_symbolically(const MechanismScene& s, const SymbolicConfiguration& c) {
+  SymbolicMotion out;
+  const Linkage& g = s.linkage;
+  const JointGeometry<ex> geo{&c.joint_at, &c.axis};
+  const size_t N = static_cast<size_t>(g.unknown_count());
+  out.unknowns = static_cast<int>(N);
+  DenseMatrix<ex> A = rigid_body_constraint_matrix<ex>(g, geo);
+  std::vector<ex> b(A.size(), ex(0));
+  append_input_rows<ex>(g, s.inputs, A, b, false, s.source, &c.inputs);
+  if (A.size() != N) {
+    out.note = fmt::format("the velocity system has {} equations for {} unknowns (redundant constraints): the "
+                           "symbolic solution needs a square system", A.size(), N);
+    return out;
+  }
+  out.det = determinant(A, N, N);
+  if (out.det.is_zero()) {
+    out.singular_everywhere = true;
+    out.note = "the velocity system is singular on every configuration of the topology (det A = 0 identically)";
+    return out;
+  }
+  // adj(A)_{ik} = (-1)^{i+k} det(A without row k and column i).
+  std::vector<std::vector<ex>> adj(N, std::vector<ex>(N));
+  for (size_t k = 0; k < N; ++k)
+    for (size_t i = 0; i < N; ++i) adj[i][k] = ((i + k) % 2 ? -1 : 1) * determinant(A, k, i);
+  // 1/det A as a symbol: every rate is then a polynomial in the coordinates and delta, and the
+  // normal forms take no gcd with powers of det A (clear_delta puts it back).
+  const ex inverse_det = out.delta;
+  const auto solve = [&](const std::vector<ex>& rhs) {
+    std::vector<ex> x;
+    for (size_t i = 0; i < N; ++i) {
+      ex sum = 0;
+      for (size_t k = 0; k < N; ++k)
+        if (!adj[i][k].is_zero() && !rhs[k].is_zero()) sum += adj[i][k] * rhs[k];
+      x.push_back(sum * inverse_det);
+    }
+    return x;
+  };
+  const std::vector<ex> qdot = solve(b);
+  std::vector<ex> h = rigid_body_acceleration_rhs<ex>(g, qdot, true, geo);
+  DenseMatrix<ex> scratch;
+  append_input_rows<ex>(g, s.inputs, scratch, h, true, s.source, &c.inputs);
+  const std::vector<ex> qddot = solve(h);
+  MechanismMotion<ex>& m = out.motion;
+  for (int l = 0; l < g.link_count(); ++l) {
+    const int col = g.unknown_of_link(l);
+    m.omega.push_back(col < 0 ? ex(0) : qdot[static_cast<size_t>(col)]);
+    m.omega_dot.push_back(col < 0 ? ex(0) : qddot[static_cast<size_t>(col)]);
+  }
+  for (int j = 0; j < g.joint_count(); ++j) {
+    const int col = g.unknown_of_joint(j);
+    m.slide.push_back(col < 0 ? ex(0) : qdot[static_cast<size_t>(col)]);
+    m.slide_dot.push_back(col < 0 ? ex(0) : qddot[static_cast<size_t>(col)]);
+  }
+  complete_joint_motion(g, m, geo);
+  MechanismMotion<ex>& f = out.free_rates;
+  const auto free_rate = [&](const std::string& name, int col, const std::vector<ex>& solved) {
+    if (col < 0) return ex(0);
+    const GiNaC::symbol r(name);
+    out.solved_rates[r] = solved[static_cast<size_t>(col)];
+    return ex(r);
+  };
+  for (int l = 0; l < g.link_count(); ++l) {
+    const std::string link = g.link_names()[static_cast<size_t>(l)];
+    f.omega.push_back(free_rate("omega_" + link, g.unknown_of_link(l), qdot));
+    f.omega_dot.push_back(free_rate("alpha_" + link, g.unknown_of_link(l), qddot));
+  }
+  for (int j = 0; j < g.joint_count(); ++j) {
+    f.slide.push_back(free_rate("sd_" + g.joint(j).name, g.unknown_of_joint(j), qdot));
+    f.slide_dot.push_back(free_rate("sdd_" + g.joint(j).name, g.unknown_of_joint(j), qddot));
+  }
+  complete_joint_motion(g, f, geo);
+  return out;
+}
+
+// p(x, delta) with delta = 1/det as a polynomial in x alone: det^k p, k the degree in delta. For
+// det != 0 it vanishes exactly where p does, so p is zero on the configurations iff this is.
+ex clear_delta(const ex& p, const SymbolicMotion& m) {
+  const ex e = GiNaC::expand(p);
+  if (!e.has(m.delta)) return e;
+  const int k = e.degree(m.delta);
+  ex out = 0;
+  for (int i = e.ldegree(m.delta); i <= k; ++i) out += e.coeff(m.delta, i) * GiNaC::pow(m.det, k - i);
+  return GiNaC::expand(out);
+}
+
+// p reduced by s^2 = 1 - c^2 for every unit axis (c, s): zero iff p vanishes on the circles.
+ex reduce_on_circles(ex p, const std::vector<std::pair<ex, ex>>& axes) {
+  for (const auto& [c, s] : axes) {
+    p = GiNaC::expand(p);
+    if (!p.has(s)) continue;
+    ex reduced = 0;
+    for (int k = p.ldegree(s); k <= p.degree(s); ++k)
+      reduced += p.coeff(s, k) * GiNaC::pow(s, k % 2) * GiNaC::pow(1 - c * c, k / 2);
+    p = reduced;
+  }
+  return GiNaC::expand(p);
+}
+
+// The degeneracies a claim's words bring (the header comment): evaluated on the symbolic frame.
+void claim_degeneracies(const MechanismNode& n, const MechanismFrameOf<ex>& f, NamedDegeneracies& out) {
+  for (const MechanismNode& c : n.children) claim_degeneracies(c, f, out);
+  const auto value = [&](size_t k) { return evaluate_mechanism_expression(n.children[k], f); };
+  const auto vec = [&](size_t k) {
+    const MechanismValueOf<ex> v = value(k);
+    return Vec2<ex>{v.x, v.y};
+  };
+  try {
+    if (n.op == MechanismNode::Op::Divide) {
+      out.emplace_back(value(1).x, fmt::format("the divisor {} is 0", n.children[1].text));
+    } else if (n.op == MechanismNode::Op::Power && n.exponent < 0) {
+      out.emplace_back(value(0).x, fmt::format("{} is 0: its negative power is undefined", n.children[0].text));
+    } else if (n.op == MechanismNode::Op::Call) {
+      const auto& a = n.children;
+      const auto field = [&](size_t k) { return f.fields[static_cast<size_t>(a[k].index)]; };
+      switch (n.word->quantity) {
+        case MechanismQuantity::Pole:
+          out.emplace_back(field(0).omega - field(1).omega,
+                           fmt::format("omega({0}) = omega({1}): {2} is at infinity (a relative translation) or undefined",
+                                       a[0].text, a[1].text, n.text));
+          break;
+        case MechanismQuantity::Centre: {
+          const Vec2<ex>& X = a[0].is_tracer_point ? f.point_at[static_cast<size_t>(a[0].index)]
+                                                   : f.joint_at[static_cast<size_t>(a[0].index)];
+          const RelativePointMotion<ex> m = relative_point_motion(field(1), field(2), X);
+          out.emplace_back(cross(m.v, m.a), fmt::format("v x a = 0 for {0}: the point is on the inflection circle or at the "
+                                                         "pole, {1} is at infinity or undefined", a[0].text, n.text));
+          break;
+        }
+        case MechanismQuantity::Meet:
+          out.emplace_back(cross(vec(1) - vec(0), vec(3) - vec(2)),
+                           fmt::format("the lines of {} are parallel or a line is a single point", n.text));
+          break;
+        default: break;
+      }
+    }
+  } catch (const UndefinedQuantity&) {
+    // The claim's own evaluation reports it.
+  }
+}
+
+struct ClaimValues {
+  std::vector<std::pair<std::string, ex>> residuals;  // (component, lhs - rhs)
+  std::vector<ex> sides;
+};
+
+ClaimValues claim_values(const MechanismDataClaim& claim, const MechanismFrameOf<ex>& f) {
+  const MechanismValueOf<ex> l = evaluate_mechanism_expression(claim.lhs.root(), f);
+  const MechanismValueOf<ex> r = evaluate_mechanism_expression(claim.rhs.root(), f);
+  ClaimValues v;
+  if (claim.lhs.kind() == MechanismKind::Vector) {
+    v.residuals = {{"x", l.x - r.x}, {"y", l.y - r.y}};
+    v.sides = {l.x, l.y, r.x, r.y};
+  } else {
+    v.residuals = {{"total", l.x - r.x}};
+    v.sides = {l.x, r.x};
+  }
+  return v;
+}
+
+// The claim on random exact configurations (a disproof, or evidence when no proof is made).
+SampleResult sample_claim(const MechanismScene& s, const MechanismDataClaim& claim, TopologySampling o, int count) {
+  o.count = count;
+  return std::move(sample_topology(s, {claim}, o).claims.front());
+}
+
+void take_samples(TopologyProof& p, SampleResult r, const TopologySampling& o, const std::string& why) {
+  switch (r.verdict) {
+    case TopologyVerdict::Disproved:
+      p.verdict = ProofVerdict::Disproved;
+      p.counterexample = std::move(r.counterexample);
+      p.argument.push_back(fmt::format("false on random exact configuration {} (seed {}), shrunk in {} steps to the "
+                                       "counterexample scene below", p.counterexample->configuration, o.seed,
+                                       p.counterexample->shrink_steps));
+      return;
+    case TopologyVerdict::HoldsOnSamples:
+      p.verdict = ProofVerdict::HoldsOnSamples;
+      p.samples_compared = r.compared;
+      p.argument.push_back(fmt::format("{}; exactly equal on {} random exact configurations of the topology (seed {}): "
+                                       "evidence, NOT a proof", why, r.compared, o.seed));
+      return;
+    case TopologyVerdict::Undefined:
+      p.verdict = ProofVerdict::Error;
+      p.error = fmt::format("{}; and the claim is undefined on every configuration drawn: {}: {}", why,
+                            r.undefined_quantity, r.undefined_reason);
+      return;
+  }
+}
+
+// Degree bounds of an expression DAG as a rational function of the symbols, num / den, with
+// delta read as 1 / det (the header comment). Memoised: the DAG's shared nodes are visited once.
+class DegreeBounds {
+ public:
+  struct Bound {
+    long num = 0, den = 0;
+  };
+  explicit DegreeBounds(const SymbolicMotion& m) : delta_(m.delta), det_degree_(total_degree(m.det)) {}
+
+  Bound of(const ex& e) {
+    if (const auto it = memo_.find(e); it != memo_.end()) return it->second;
+    const Bound b = compute(e);
+    memo_.emplace(e, b);
+    return b;
+  }
+
+  static long total_degree(const ex& polynomial) {
+    const ex p = GiNaC::expand(polynomial);
+    long most = 0;
+    const auto term_degree = [](const ex& t) {
+      long d = 0;
+      const auto factor = [&d](const ex& f) {
+        if (GiNaC::is_a<GiNaC::symbol>(f)) d += 1;
+        else if (GiNaC::is_exactly_a<GiNaC::power>(f)) d += GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_long();
+      };
+      if (GiNaC::is_exactly_a<GiNaC::mul>(t))
+        for (size_t i = 0; i < t.nops(); ++i) factor(t.op(i));
+      else
+        factor(t);
+      return d;
+    };
+    if (GiNaC::is_exactly_a<GiNaC::add>(p))
+      for (size_t i = 0; i < p.nops(); ++i) most = std::max(most, term_degree(p.op(i)));
+    else
+      most = term_degree(p);
+    return most;
+  }
+
+ private:
+  Bound compute(const ex& e) {
+    if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) return {0, 0};
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return e.is_equal(delta_) ? Bound{0, det_degree_} : Bound{1, 0};
+    if (GiNaC::is_exactly_a<GiNaC::add>(e)) {  // over the product of the denominators
+      std::vector<Bound> parts;
+      long den = 0;
+      for (size_t i = 0; i < e.nops(); ++i) parts.push_back(of(e.op(i))), den += parts.back().den;
+      long num = 0;
+      for (const Bound& b : parts) num = std::max(num, b.num + den - b.den);
+      return {num, den};
+    }
+    if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
+      Bound out;
+      for (size_t i = 0; i < e.nops(); ++i) {
+        const Bound b = of(e.op(i));
+        out.num += b.num, out.den += b.den;
+      }
+      return out;
+    }
+    if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer()) {
+      const Bound b = of(e.op(0));
+      const long k = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_long();
+      return k >= 0 ? Bound{k * b.num, k * b.den} : Bound{-k * b.den, -k * b.num};
+    }
+    throw NoDegreeBound{};
+  }
+
+ public:
+  struct NoDegreeBound {};
+
+ private:
+  GiNaC::symbol delta_;
+  long det_degree_;
+  std::unordered_map<ex, Bound, std::hash<ex>, GiNaC::ex_is_equal> memo_;
+};
+
+constexpr double kIdentityTestRange = 1099511627776.0;  // 2^40: each coordinate, rate and t
+constexpr int kIdentityTestTrials = 3;
+// Expansions beyond this many terms go to the identity test: one would take minutes.
+constexpr double kTermLimit = 5e5;
+
+class TopologyProver {
+ public:
+  TopologyProver(const MechanismScene& s, const TopologyProofOptions& o) : scene_(s), options_(o) {}
+
+  TopologyProof prove(const MechanismDataClaim& claim) {
+    const auto start = Clock::now();
+    TopologyProof p;
+    p.info = claim.info;
+    // A wrong claim usually fails on the first configurations: disproved without symbolic work.
+    std::optional<SampleResult> quick;
+    if (options_.quick_samples > 0) quick = sample_claim(scene_, claim, options_.sampling, options_.quick_samples);
+    if (quick && quick->verdict == TopologyVerdict::Disproved)
+      take_samples(p, std::move(*quick), options_.sampling, "");
+    else
+      prove_symbolically(claim, p, start);
+    p.seconds = since(start);
+    return p;
+  }
+
+  TopologyProofRun run(const std::vector<MechanismDataClaim>& claims) {
+    const auto start = Clock::now();
+    TopologyProofRun r;
+    r.topology = scene_.name;
+    r.symbols = config_.names;
+    r.relations = config_.relations;
+    r.unknowns = scene_.linkage.unknown_count();
+    for (const MechanismDataClaim& c : claims) r.claims.push_back(prove(c));
+    if (motion_) {
+      r.system_note = motion_->note;
+      if (motion_->note.empty()) r.det_terms = static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(motion_->det) ? motion_->det.nops() : 1);
+    }
+    r.seconds = since(start);
+    return r;
+  }
+
+ private:
+  const SymbolicMotion& motion() {
+    if (!motion_) motion_ = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_));
+    return *motion_;
+  }
+
+  void prove_symbolically(const MechanismDataClaim& claim, TopologyProof& p, Clock::time_point start) {
+    const SymbolicMotion& m = motion();
+    const auto fall_back = [&](const std::string& why) {
+      take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling, why);
+    };
+    if (m.singular_everywhere) {
+      p.verdict = ProofVerdict::Error;
+      p.error = m.note;
+      return;
+    }
+    if (!m.note.empty()) return fall_back("no symbolic proof: " + m.note);
+    if (reduce_on_circles(m.det, config_.unit_axes).is_zero()) {
+      p.verdict = ProofVerdict::Error;
+      p.error = "the velocity system is singular on every configuration whose axes are unit vectors (det A = 0 there)";
+      return;
+    }
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options_.seconds));
+    try {
+      if (prove_for_free_rates(claim, p, m, deadline)) return;
+    } catch (const proof_detail::NormalizerOutOfTime&) {
+      // Not within the budget with free rates: the solved rates are tried next.
+    } catch (const UndefinedQuantity&) {
+      // Undefined for free rates (e.g. omega(L) - omega(M) is 0 for every rate): decided below.
+    } catch (const GiNaC::pole_error&) {
+    }
+    try {
+      const MechanismFrameOf<ex> frame(scene_, m.motion, config_.joint_at, config_.point_at, config_.axis, true);
+      const ClaimValues values = claim_values(claim, frame);
+      RationalNormalizer normalizer(false);  // the denominators are known: no gcds (rational_normal.h)
+      normalizer.set_term_limit(kTermLimit);
+      normalizer.set_deadline(deadline);
+      bool uses_motion = false;
+      for (const auto& [component, residual] : values.residuals) {
+        uses_motion = uses_motion || residual.has(m.delta);
+        const ex numerator = clear_delta(normalizer.numerator(residual), m);
+        p.numerator_terms += static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(numerator) ? numerator.nops() : !numerator.is_zero());
+        const ex reduced = reduce_on_circles(numerator, config_.unit_axes);
+        if (!reduced.is_zero()) return disprove(claim, p, component, reduced);
+      }
+      p.argument.push_back(fmt::format(
+          "lhs - rhs is identically zero as a rational function of the {} coordinates{}{}", config_.names.size(),
+          config_.relations.empty() ? "" : " on the unit circles of the axes",
+          p.numerator_terms == 0 ? "" : fmt::format(" (its numerator, {} terms, vanishes there)", p.numerator_terms)));
+      NamedDegeneracies motion_named{{m.det, "dead centre or change point: det A = 0, the loop closures and the inputs do "
+                                            "not determine the velocities"}};
+      NamedDegeneracies claim_named;
+      claim_degeneracies(claim.lhs.root(), frame, claim_named);
+      claim_degeneracies(claim.rhs.root(), frame, claim_named);
+      for (auto& [poly, meaning] : claim_named) poly = clear_delta(normalizer.numerator(poly), m);
+      // What was divided by, as polynomials in the coordinates: det A where the rates enter, and
+      // the numerators of the claim's own divisors.
+      std::vector<ex> divisors;
+      if (uses_motion) divisors.push_back(m.det);
+      for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(clear_delta(normalizer.numerator(d), m));
+      const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
+          divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
+      for (const proof_detail::NamedFactor& f : factors) {
+        if (reduce_on_circles(f.factor, config_.unit_axes).is_zero()) {
+          p.verdict = ProofVerdict::Error;
+          p.error = fmt::format("the claim is undefined on every configuration: it divides by {}, which is 0 wherever the "
+                                "axes are unit vectors", to_text(f.factor));
+          return;
+        }
+        p.except.push_back({to_text(f.factor), f.meaning.empty() ? "unnamed: a factor of a divisor" : f.meaning});
+      }
+      p.verdict = p.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
+      p.argument.push_back(p.except.empty() ? std::string("no division by a non-constant: it holds on every configuration")
+                                            : fmt::format("it holds on every configuration outside the zero sets of the {} "
+                                                          "factor(s) listed", p.except.size()));
+    } catch (const UndefinedQuantity& u) {
+      p.verdict = ProofVerdict::Error;
+      p.error = fmt::format("undefined on every configuration of the topology: {}: {}", u.quantity(), u.reason());
+    } catch (const GiNaC::pole_error&) {
+      p.verdict = ProofVerdict::Error;
+      p.error = "undefined on every configuration of the topology: a division by an expression that is identically 0";
+    } catch (const proof_detail::NormalizerOutOfTime& limit) {
+      identity_test(claim, p, m, fmt::format("no symbolic normal form within the budget ({})", limit.why));
+    }
+  }
+
+  // Step 0 (the header comment): lhs - rhs with every rate a free symbol. True if it decided
+  // the claim: zero for all rates, a rigid-body identity proved on every configuration (the
+  // dead centres included: it holds for whatever rates the constraints admit there).
+  bool prove_for_free_rates(const MechanismDataClaim& claim, TopologyProof& p, const SymbolicMotion& m,
+                            Clock::time_point deadline) {
+    const MechanismFrameOf<ex> frame(scene_, m.free_rates, config_.joint_at, config_.point_at, config_.axis, true);
+    const ClaimValues values = claim_values(claim, frame);
+    RationalNormalizer normalizer(false);
+    normalizer.set_term_limit(kTermLimit);
+    normalizer.set_deadline(deadline);
+    for (const auto& [component, residual] : values.residuals)
+      if (!reduce_on_circles(normalizer.numerator(residual), config_.unit_axes).is_zero()) return false;
+    NamedDegeneracies named;
+    claim_degeneracies(claim.lhs.root(), frame, named);
+    claim_degeneracies(claim.rhs.root(), frame, named);
+    for (auto& [poly, meaning] : named) poly = normalizer.numerator(poly);
+    std::vector<ex> divisors;
+    for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(normalizer.numerator(d));
+    const std::vector<proof_detail::NamedFactor> factors =
+        proof_detail::divisor_factors(divisors, {[&] { return named; }}, normalizer, true);
+    for (const proof_detail::NamedFactor& f : factors) {
+      // With the solved rates a factor may vanish on every configuration: then nothing is proved.
+      RationalNormalizer solved(false);
+      const ex on_motion = reduce_on_circles(clear_delta(solved.numerator(f.factor.subs(m.solved_rates)), m), config_.unit_axes);
+      if (on_motion.is_zero()) {
+        p.verdict = ProofVerdict::Error;
+        p.error = fmt::format("the claim is undefined on every configuration: it divides by {}, which is 0 for the rates "
+                              "of every configuration", to_text(f.factor));
+        return true;
+      }
+      p.except.push_back({to_text(f.factor), f.meaning.empty() ? "unnamed: a factor of a divisor" : f.meaning});
+    }
+    p.verdict = p.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
+    p.argument.push_back(fmt::format(
+        "lhs - rhs is identically zero for every value of the links' rates (omega_L, alpha_L{}) and of the {} "
+        "coordinates{}: a rigid-body identity, the loop closures are not needed",
+        m.free_rates.slide.empty() ? "" : ", sd_J, sdd_J", config_.names.size(),
+        config_.relations.empty() ? "" : " (axes on the unit circles)"));
+    p.argument.push_back(p.except.empty() ? std::string("no division by a non-constant: it holds on every configuration, "
+                                                        "for any rates the constraints admit")
+                                          : fmt::format("it holds wherever none of the {} factor(s) listed vanishes",
+                                                        p.except.size()));
+    return true;
+  }
+
+  // The randomized identity test (the header comment); samples if it cannot be done.
+  void identity_test(const MechanismDataClaim& claim, TopologyProof& p, const SymbolicMotion& m, const std::string& why) {
+    const MechanismFrameOf<ex> frame(scene_, m.motion, config_.joint_at, config_.point_at, config_.axis, true);
+    const ClaimValues values = claim_values(claim, frame);
+    DegreeBounds bounds(m);
+    long num = 0, den = bounds.of(m.det).num;  // the singular configurations are redrawn too
+    try {
+      for (const auto& [component, residual] : values.residuals) {
+        const DegreeBounds::Bound b = bounds.of(residual);
+        num = std::max(num, b.num);
+        den += b.den;
+      }
+    } catch (const DegreeBounds::NoDegreeBound&) {
+      return take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling,
+                          why + "; no degree bound for a randomized identity test");
+    }
+    if (!config_.unit_axes.empty()) num *= 2, den *= 2;  // through u(t) = ((1 - t^2), 2t) / (1 + t^2)
+    const double per_trial = static_cast<double>(num) / (kIdentityTestRange - static_cast<double>(den));
+    SplitMix64 rng(options_.sampling.seed * 0xD1B54A32D192ED03ull + 0x1D5ull);
+    const auto draw = [&rng] {
+      const std::uint64_t bits = rng.next() >> 24;  // 40 random bits
+      return Rational(static_cast<long long>(bits)) - Rational(1LL << 39);
+    };
+    const TopologyLayout layout = topology_layout(scene_);
+    int passed = 0, attempts = 0;
+    for (; passed < kIdentityTestTrials && attempts < 20 * kIdentityTestTrials; ++attempts) {
+      TopologyValues v;
+      for (int g = 0; g < layout.groups(); ++g) v.positions.push_back({draw(), draw()});
+      for (const LinkageJoint& j : scene_.linkage.joints()) {
+        if (j.type != JointType::Prismatic) {
+          v.axes.push_back({0, 0});
+          continue;
+        }
+        const Rational t = draw(), w = 1 + t * t;
+        v.axes.push_back({(1 - t * t) / w, 2 * t / w});
+      }
+      for (size_t k = 0; k < scene_.inputs.size(); ++k) v.rate.push_back(draw()), v.rate_dot.push_back(draw());
+      const MechanismScene s = topology_configuration(scene_, layout, v, fmt::format("counterexample-{}", claim.info.id));
+      std::optional<MechanismSolution<Rational>> solution;
+      try {
+        solution = solve_mechanism<Rational>(
+            s.linkage, s.inputs, rigid_body_constraint_matrix<Rational>(s.linkage),
+            [&](const std::vector<Rational>& qd) { return rigid_body_acceleration_rhs<Rational>(s.linkage, qd); }, s.source);
+      } catch (const InputError&) {
+        continue;  // singular here: redrawn
+      }
+      const MechanismFrame exact(s, solution->motion);
+      const ClaimSides<Rational> sides = evaluate_mechanism_claim(claim, exact);
+      bool defined = true, equal = true;
+      for (const auto& c : sides.instances) {
+        defined = defined && c.lhs.has_value() && c.rhs.has_value();
+        equal = equal && defined && c.lhs.get() == c.rhs.get();
+      }
+      if (!defined) continue;
+      if (!equal) {  // a counterexample (large); a small one is searched, else this one is given
+        p.argument.push_back(why);
+        SampleResult r = sample_claim(scene_, claim, options_.sampling, options_.sampling.count);
+        if (r.verdict == TopologyVerdict::Disproved) return take_samples(p, std::move(r), options_.sampling, why);
+        MechanismCounterexample cx;
+        cx.scene = s;
+        cx.scene.source = "counterexample";
+        cx.scene_yaml = mechanism_scene_to_yaml(cx.scene);
+        cx.outcome = run_mechanism_claim(to_mechanism_claim(claim), MechanismContext{cx.scene, *solution});
+        p.verdict = ProofVerdict::Disproved;
+        p.counterexample = std::move(cx);
+        p.argument.push_back("false on a random configuration with 40-bit coordinates (not shrunk)");
+        return;
+      }
+      ++passed;
+    }
+    if (passed < kIdentityTestTrials)
+      return take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling,
+                          why + fmt::format("; only {} of {} random configurations with 40-bit coordinates were defined",
+                                            passed, attempts));
+    p.verdict = ProofVerdict::HoldsWithProbability;
+    p.trials = passed;
+    p.degree_bound = num;
+    p.failure_bound = std::pow(per_trial, passed);
+    p.argument.push_back(why);
+    p.argument.push_back(fmt::format(
+        "randomized identity test: lhs - rhs has a numerator of total degree at most {}; exactly equal at {} random "
+        "configurations with every coordinate, rate{} uniform among 2^40 integers; a false claim passes with "
+        "probability at most ({} / (2^40 - {}))^{} = {:.2e}. NOT a proof",
+        num, passed, config_.unit_axes.empty() ? "" : " and axis parameter", num, den, passed, p.failure_bound));
+  }
+
+  void disprove(const MechanismDataClaim& claim, TopologyProof& p, const std::string& component, const ex& numerator) {
+    const int terms = static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(numerator) ? numerator.nops() : 1);
+    const std::string why = fmt::format("lhs - rhs{} is not identically zero: its numerator is a non-zero polynomial of {} "
+                                        "terms", component == "total" ? "" : " (" + component + ")", terms);
+    p.argument.push_back(why);
+    SampleResult r = sample_claim(scene_, claim, options_.sampling, options_.sampling.count);
+    if (r.verdict == TopologyVerdict::Disproved) return take_samples(p, std::move(r), options_.sampling, why);
+    p.verdict = ProofVerdict::Error;
+    p.error = why + fmt::format(", but no counterexample was found on {} random exact configurations (seed {})",
+                                r.compared, options_.sampling.seed);
+  }
+
+  const MechanismScene& scene_;
+  TopologyProofOptions options_;
+  SymbolicConfiguration config_ = symbolic_configuration(scene_);
+  std::unique_ptr<SymbolicMotion> motion_;
+};
+
+}  // namespace
+
+bool TopologyProof::is_as_expected() const {
+  if (info.expected == Expectation::Fails) return verdict == ProofVerdict::Disproved;
+  return verdict == ProofVerdict::Proved || verdict == ProofVerdict::ProvedGenerically ||
+         verdict == ProofVerdict::HoldsWithProbability || verdict == ProofVerdict::HoldsOnSamples;
+}
+
+TopologyProofRun prove_topology(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
+                                const TopologyProofOptions& options) {
+  return TopologyProver(scene, options).run(claims);
+}
+
+}  // namespace linkproof

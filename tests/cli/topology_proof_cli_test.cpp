@@ -1,0 +1,122 @@
+// `prove --file CLAIMS --topology SCENE` and `check-claim CLAIMS --topology SCENE` (no --count):
+// a user's claims about a four-bar, an inverted slider-crank, a slider-crank and the notes'
+// four-bar acceleration polygon are proved for every configuration of the topology, the wrong
+// variants disproved with counterexample scenes that `check-claim --scene` re-fails; a proof out
+// of its budget is a randomized identity test with its failure bound, not a proof (--strict).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iostream>
+
+#include "support/cli_run.h"
+
+namespace linkproof {
+namespace {
+
+using test::CliRun;
+using test::run_cli;
+
+std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+
+struct Pair {
+  std::string claims, scene;
+};
+
+TEST(TopologyProofCli, TrueClaimsAreProvedAndWrongOnesDisprovedWithReplayableCounterexamples) {
+  const std::vector<Pair> pairs = {
+      {"verify/claims/mechanisms/fourbar.yaml", "verify/scenes/mechanisms/seed001_fourbar.yaml"},
+      {"verify/claims/mechanisms/fourbar_acceleration_polygon.yaml", "verify/scenes/mechanisms/seed001_fourbar.yaml"},
+      {"verify/claims/mechanisms/inverted_slider_crank.yaml", "verify/scenes/mechanisms/inverted_slider_crank.yaml"},
+      {"verify/claims/mechanisms/slider_crank.yaml", "verify/scenes/mechanisms/dimensions_slider_crank.yaml"}};
+  for (const Pair& p : pairs) {
+    const CliRun r = run_cli({"prove", "--file", source(p.claims), "--topology", source(p.scene), "--json"});
+    ASSERT_EQ(r.code, 0) << p.claims << "\n" << r.out.substr(0, 4000) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["mode"], "topology_proof");
+    for (const auto& c : j["claims"]) {
+      const std::string id = c["id"];
+      std::cout << id << ": " << c["verdict"].get<std::string>() << " (" << c["seconds"].get<double>() << " s)\n";
+      if (c["expected"] == "holds") {
+        EXPECT_TRUE(c["verdict"] == "proved" || c["verdict"] == "proved_generically") << id << ": " << c.dump(2);
+        continue;
+      }
+      ASSERT_EQ(c["verdict"], "disproved") << id;
+      const std::string yaml = c["counterexample"]["scene_yaml"];
+      const std::string path = ::testing::TempDir() + "tp_" + id + ".yaml";
+      std::ofstream(path) << yaml;
+      const CliRun replay = run_cli({"check-claim", source(p.claims), "--scene", path, "--json"});
+      bool found = false;
+      const auto replayed = nlohmann::json::parse(replay.out);
+      for (const auto& rc : replayed["claims"])
+        if (rc["id"] == id) {
+          found = true;
+          EXPECT_EQ(rc["verdict"], "fails") << id << "\n" << yaml;
+        }
+      EXPECT_TRUE(found) << id;
+    }
+  }
+}
+
+TEST(TopologyProofCli, AProofNamesItsExceptionalSetInTextAndJson) {
+  const std::string claims = source("verify/claims/mechanisms/fourbar.yaml");
+  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const CliRun r = run_cli({"prove", "--file", claims, "--topology", scene, "--claim", "coupler_pole", "--json"});
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["claims"].size(), 1u);
+  const auto& c = j["claims"][0];
+  EXPECT_EQ(c["verdict"], "proved_generically");
+  std::string meanings;
+  for (const auto& e : c["except"]) meanings += e["meaning"].get<std::string>() + "\n";
+  EXPECT_NE(meanings.find("dead centre"), std::string::npos) << meanings;
+  EXPECT_NE(meanings.find("parallel"), std::string::npos) << meanings;
+  const CliRun text = run_cli({"prove", "--file", claims, "--topology", scene, "--claim", "coupler_pole"});
+  EXPECT_EQ(text.code, 0);
+  EXPECT_NE(text.out.find("except where:"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("x_O2, y_O2"), std::string::npos) << text.out;
+}
+
+TEST(TopologyProofCli, CheckClaimOnATopologyProvesUnlessACountIsGiven) {
+  const std::string claims = source("verify/claims/mechanisms/fourbar.yaml");
+  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const CliRun proof = run_cli({"check-claim", claims, "--topology", scene, "--json"});
+  ASSERT_EQ(proof.code, 0) << proof.err;
+  EXPECT_EQ(nlohmann::json::parse(proof.out)["mode"], "topology_proof");
+  const CliRun samples = run_cli({"check-claim", claims, "--topology", scene, "--count", "5", "--json"});
+  ASSERT_EQ(samples.code, 0) << samples.err;
+  EXPECT_EQ(nlohmann::json::parse(samples.out)["mode"], "topology");
+}
+
+TEST(TopologyProofCli, WithoutTimeForAProofTheIdentityTestIsNotAProofUnderStrict) {
+  const std::string claims = source("verify/claims/mechanisms/fourbar.yaml");
+  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const std::vector<std::string> args = {"prove", "--file", claims, "--topology", scene, "--claim", "alpha3_closed_form",
+                                         "--proof-seconds", "0", "--json"};
+  const CliRun r = run_cli(args);
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const auto c = nlohmann::json::parse(r.out)["claims"][0];
+  EXPECT_EQ(c["verdict"], "holds_with_probability");
+  EXPECT_LT(c["identity_test"]["failure_bound"].get<double>(), 1e-20);
+  std::vector<std::string> strict = args;
+  strict.push_back("--strict");
+  EXPECT_EQ(run_cli(strict).code, 1);
+}
+
+TEST(TopologyProofCli, ProveOnATopologyRefusesMissingOrPolygonOptions) {
+  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const CliRun no_file = run_cli({"prove", "--topology", scene});
+  EXPECT_EQ(no_file.code, 2);
+  EXPECT_NE(no_file.err.find("--topology"), std::string::npos) << no_file.err;
+  const CliRun with_n =
+      run_cli({"prove", "--file", source("verify/claims/mechanisms/fourbar.yaml"), "--topology", scene, "--n", "5"});
+  EXPECT_EQ(with_n.code, 2);
+  EXPECT_NE(with_n.err.find("--n"), std::string::npos) << with_n.err;
+  const CliRun unknown = run_cli(
+      {"prove", "--file", source("verify/claims/mechanisms/fourbar.yaml"), "--topology", scene, "--claim", "nope"});
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("nope"), std::string::npos) << unknown.err;
+}
+
+}  // namespace
+}  // namespace linkproof
