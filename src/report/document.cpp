@@ -12,6 +12,13 @@ Block display_equation(const std::string& lhs_tex, const std::string& rhs_tex) {
   return b;
 }
 
+Block display_folded(const std::string& tex, const std::string& what) {
+  Block b = display_math(tex);
+  if (b.display.size() > kFoldTexChars)
+    b.fold = {text(fmt::format("{} (a long expression, {} characters of TeX: open to show it)", what, tex.size()))};
+  return b;
+}
+
 void add_reproduce_section(Document& d) {
   const Reproduce& r = d.reproduce;
   Section s{"reproduce", "Reproduce", {}, {}};

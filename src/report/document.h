@@ -86,6 +86,9 @@ inline Block headline_block(std::vector<Rich> items) { Block b; b.kind = Block::
 /// A displayed equation `lhs = rhs`, folded in HTML behind "lhs = … (N characters of TeX)" when the
 /// TeX is longer than kFoldTexChars.
 Block display_equation(const std::string& lhs_tex, const std::string& rhs_tex);
+/// A displayed equation folded in HTML behind `what` and its size when its TeX is longer than
+/// kFoldTexChars ("the second time derivative, x component (a long expression, ...)").
+Block display_folded(const std::string& tex, const std::string& what);
 
 struct Section {
   std::string id;     ///< stable anchor, e.g. "summary"

@@ -149,16 +149,16 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
   const std::string N = std::to_string(n), n1 = std::to_string(n - 1), n2 = std::to_string(n - 2);
   s.blocks.push_back(paragraph({text("Loop closure (eq. 1), side "), math(N), text(" fixed ("),
                                 math("\\theta_{" + N + "}"), text(" constant):")}));
-  s.blocks.push_back(display_math(latex_of(sol.closure[0]) + " = 0"));
-  s.blocks.push_back(display_math(latex_of(sol.closure[1]) + " = 0"));
+  s.blocks.push_back(display_folded(latex_of(sol.closure[0]) + " = 0", "the loop closure, x component"));
+  s.blocks.push_back(display_folded(latex_of(sol.closure[1]) + " = 0", "the loop closure, y component"));
   s.blocks.push_back(paragraph({text("First time derivative, with "), math("L_j\\cos\\theta_j = x_j"), text(", "),
                                 math("L_j\\sin\\theta_j = y_j"), text(" (the side components of "),
                                 math("r_j"), text("):")}));
-  s.blocks.push_back(display_math(latex_of(sol.velocity[0]) + " = 0"));
-  s.blocks.push_back(display_math(latex_of(sol.velocity[1]) + " = 0"));
+  s.blocks.push_back(display_folded(latex_of(sol.velocity[0]) + " = 0", "the first time derivative, x component"));
+  s.blocks.push_back(display_folded(latex_of(sol.velocity[1]) + " = 0", "the first time derivative, y component"));
   s.blocks.push_back(paragraph(plain("Second time derivative:")));
-  s.blocks.push_back(display_math(latex_of(sol.acceleration[0]) + " = 0"));
-  s.blocks.push_back(display_math(latex_of(sol.acceleration[1]) + " = 0"));
+  s.blocks.push_back(display_folded(latex_of(sol.acceleration[0]) + " = 0", "the second time derivative, x component"));
+  s.blocks.push_back(display_folded(latex_of(sol.acceleration[1]) + " = 0", "the second time derivative, y component"));
   s.blocks.push_back(paragraph({text("Solved by Cramer's rule with "), math("D = r_{" + n2 + "}\\times r_{" + n1 + "}"),
                                 text(" = "), math(latex_of(sol.determinant)), text(":")}));
   s.blocks.push_back(display_equation("\\omega_{" + n1 + "," + N + "}", latex_of(sol.omega_n1.normal())));

@@ -146,7 +146,7 @@ details.lp-fold-display > summary { color: #222; }
 .lp-folded { max-width: 100%; overflow-x: auto; overflow-wrap: anywhere; word-break: break-all; }
 pre { background: #f6f6f6; padding: 0.5rem; overflow-x: auto; white-space: pre-wrap; overflow-wrap: anywhere; }
 figure { margin: 1rem 0; } figcaption { font-size: 0.9rem; color: #444; }
-svg { max-width: 100%; height: auto; border: 1px solid #ddd; }
+svg { max-width: 100%; height: auto; border: 1px solid #ddd; box-sizing: border-box; }
 .lp-nokatex { color: #a00; }
 @media print {
   body { max-width: none; margin: 0; padding: 0; font-size: 10pt; }

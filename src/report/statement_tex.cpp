@@ -50,7 +50,9 @@ std::string formula_tex(const std::string& formula) {
   if (!formula.empty() && std::string_view("_^").find(formula.back()) != std::string_view::npos) return "";
   static const std::regex double_script(R"(_(\w|\{[^{}]*\})_|\^(\w|\{[^{}]*\})\^)");
   if (std::regex_search(formula, double_script)) return "";
-  std::string t = formula;
+  // A script after a space starts a new (empty) atom: "sum_j _j omega-dot" has a left subscript
+  // on its second term, not a double subscript.
+  std::string t = std::regex_replace(formula, std::regex("(^| )([_^])"), "$1{}$2");
   // omega-dot holds "omega": kept aside while the names are replaced on word boundaries.
   t = std::regex_replace(t, std::regex(R"(\bomega-dot(?![A-Za-z]))"), "OMEGADOT");
   t = std::regex_replace(t, std::regex(R"(\b(omega|lambda|beta|phi|mu|alpha|gamma|theta|Delta|sum|cot|sin|cos)(?![A-Za-z]))"),
@@ -66,7 +68,8 @@ std::string formula_tex(const std::string& formula) {
   t = std::regex_replace(t, std::regex("\\|"), "\\vert ");
   // "\omega _{j}": no space before a script or a prime.
   t = std::regex_replace(t, std::regex(R"( +([_^']))"), "$1");
-  if (!t.empty() && (t.front() == '_' || t.front() == '^')) t.insert(0, "{}");
+  t = std::regex_replace(t, std::regex("  +"), " ");
+  while (!t.empty() && t.back() == ' ') t.pop_back();
   return t;
 }
 

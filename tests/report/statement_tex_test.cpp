@@ -22,8 +22,10 @@ TEST(StatementTex, FormulaBecomesMathWithGreekLettersAndSums) {
   EXPECT_EQ(formula_tex("omega_out/omega_in"), "\\omega_{\\mathrm{out}}/\\omega_{\\mathrm{in}}");
   EXPECT_EQ(formula_tex("Q_jK'_j / Q_jK_n"), "Q_jK'_j / Q_jK_n");
   EXPECT_EQ(formula_tex("|r_{n-1}|^2"), "\\vert r_{n-1}\\vert^2");
-  EXPECT_EQ(formula_tex("j < l"), "j \\lt  l");
+  EXPECT_EQ(formula_tex("j < l"), "j \\lt l");
   EXPECT_EQ(formula_tex("_j omega-dot_{n-1,n}"), "{}_j \\dot\\omega_{n-1,n}");
+  // A left subscript after a sum's own: a new atom, not a double subscript (pdflatex stopped).
+  EXPECT_EQ(formula_tex("sum_j _j omega-dot_{n-1,n}"), "\\sum_j {}_j \\dot\\omega_{n-1,n}");
   EXPECT_EQ(formula_tex("omega_{n-1,n}^2 r_{n-1}"), "\\omega_{n-1,n}^2 r_{n-1}");
 }
 
