@@ -34,7 +34,13 @@ std::pair<std::string, std::string> split_label(const std::string& label) {
 
 std::string svg_label(const std::string& label) {
   const auto [base, sub] = split_label(label);
+  // The program's Greek names as letters ("beta_1" -> β₁), as label_tex does for LaTeX.
+  static const std::pair<const char*, const char*> greek[] = {{"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"},
+                                                               {"omega", "ω"}, {"phi", "φ"},    {"lambda", "λ"},
+                                                               {"mu", "μ"}};
   std::string out = svg_escape(base);
+  for (const auto& [name, letter] : greek)
+    if (base == name) out = letter;
   if (!sub.empty()) out += "<tspan baseline-shift=\"sub\" font-size=\"75%\">" + svg_escape(sub) + "</tspan>";
   return out;
 }

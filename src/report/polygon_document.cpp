@@ -255,7 +255,8 @@ Section construction_section(const PolygonScene& scene) {
       {text("Four-bar j is "), math("K'_j K_{n-2} K_{n-1} K_n"), text(" with "), math("K'_j = K_{n-2} - r_j"),
        text("; "), math("Q_j = K_{n-2}K_{n-1} \\cap K_nK'_j"), text(", "), math("P'_j = K_{n-1}K_n \\cap K'_jK_{n-2}"),
        text("; the ratios are directed segments and "), math("\\beta_j > 0"),
-       text(" iff P'_j → Q_j → K_{n-1} is counter-clockwise (docs/conventions.md §A3). Exact values:")}));
+       text(" iff "), math("P'_j \\to Q_j \\to K_{n-1}"),
+       text(" is counter-clockwise (docs/conventions.md §A3). Exact values, each with its decimal:")}));
   Table t{{plain("j"), tex("K'_j"), tex("Q_j"), tex("P'_j"), tex("i_{n-1,j}"), tex("i_{n-2,j}"), tex("\\cot\\beta_j"),
            tex("\\lambda_j")},
           {}};

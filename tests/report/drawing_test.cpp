@@ -60,6 +60,14 @@ TEST(ReportDrawing, AConstructionMuchLargerThanTheLinkageGetsAnEnlargedPanel) {
   EXPECT_EQ(panels, 2u);
 }
 
+TEST(ReportDrawing, SvgWritesGreekNamesOfLabelsAsLetters) {
+  Drawing d = unit_square_with({3, 2});
+  d.angles.push_back({{0, 0}, {1, 0}, {0, 1}, "beta_1", "#aa3300"});
+  const std::string svg = render_svg(d);
+  EXPECT_NE(svg.find(">β<tspan baseline-shift=\"sub\" font-size=\"75%\">1</tspan>"), std::string::npos);
+  EXPECT_EQ(svg.find(">beta<"), std::string::npos);
+}
+
 TEST(ReportDrawing, SvgHasEverySegmentMarkerAndSubscriptLabel) {
   const std::string svg = render_svg(unit_square_with({3, 2}));
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <regex>
 
 #include "slow/browser.h"
@@ -81,6 +82,9 @@ struct Scene {
   const char* path;  ///< the scene, relative to the source tree
   const char* stem;  ///< the report's file stem
 };
+
+// The scene's name in test listings (not GoogleTest's bytes of the struct).
+void PrintTo(const Scene& s, std::ostream* os) { *os << s.name; }
 
 class ReportLayout : public ::testing::TestWithParam<Scene> {};
 
