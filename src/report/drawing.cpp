@@ -233,10 +233,12 @@ std::string render_svg(const Drawing& d, double width_px) {
   return s + "</svg>\n";
 }
 
-std::string render_latex_picture(const Drawing& d, double width_cm) {
+namespace {
+
+// One picture of `d` seen through view `v`, its larger side `width_cm`.
+std::string latex_picture(const Drawing& d, const View& v, double width_cm) {
   // The geometry is one block of PDF path operators (\pdfliteral, built into pdfTeX: no
   // package needed), in big points relative to the picture's origin; labels are \put.
-  const View v = compute_view(d);
   const double scale = width_cm / 2.54 * 72 / std::max(v.x1 - v.x0, v.y1 - v.y0);
   const double width_bp = (v.x1 - v.x0) * scale;
   const double height_bp = (v.y1 - v.y0) * scale;
@@ -301,6 +303,16 @@ std::string render_latex_picture(const Drawing& d, double width_cm) {
   }
   s += "\\end{picture}\n";
   return s;
+}
+
+}  // namespace
+
+std::string render_latex_picture(const Drawing& d, double width_cm) {
+  const View v = compute_view(d);
+  const std::optional<View> detail = detail_view(d);
+  if (!detail) return latex_picture(d, v, width_cm);
+  // The whole and the linkage enlarged side by side, each on half the width.
+  return latex_picture(d, v, width_cm * 0.6) + "\\quad\n" + latex_picture(d, *detail, width_cm * 0.6);
 }
 
 }  // namespace linkproof::report

@@ -84,7 +84,8 @@ std::optional<View> detail_view(const Drawing& d);
 std::string render_svg(const Drawing& d, double width_px = 640);
 
 /// The drawing as a LaTeX picture environment drawn by \pdfliteral (pdfTeX; no package needed);
-/// the larger side of the view is `width_cm`.
+/// the larger side of the view is `width_cm`. With a detail_view, two pictures side by side
+/// (0.6 `width_cm` each): the whole and the linkage enlarged.
 std::string render_latex_picture(const Drawing& d, double width_cm = 12);
 
 /// "K'_1" -> TeX "K'_{1}", "beta_2" -> "\beta_{2}": labels of markers as TeX math. The label

@@ -60,6 +60,16 @@ TEST(ReportDrawing, AConstructionMuchLargerThanTheLinkageGetsAnEnlargedPanel) {
   EXPECT_EQ(panels, 2u);
 }
 
+TEST(ReportDrawing, LatexPictureOfAConstructionMuchLargerThanTheLinkageHasTheLinkageEnlargedBeside) {
+  Drawing d = unit_square_with({5, 5});
+  d.segments.push_back(Segment{{1, 1}, {5, 5}, "#aa0000", Stroke::Dashed, false, ""});
+  const std::string tex = render_latex_picture(d);
+  size_t pictures = 0;
+  for (size_t at = tex.find("\\begin{picture}"); at != std::string::npos; at = tex.find("\\begin{picture}", at + 1)) ++pictures;
+  EXPECT_EQ(pictures, 2u);
+  EXPECT_EQ(render_latex_picture(unit_square_with({3, 2})).find("\\quad"), std::string::npos);
+}
+
 TEST(ReportDrawing, SvgWritesGreekNamesOfLabelsAsLetters) {
   Drawing d = unit_square_with({3, 2});
   d.angles.push_back({{0, 0}, {1, 0}, {0, 1}, "beta_1", "#aa3300"});
