@@ -26,13 +26,30 @@ std::string side_sentence(Side s) {
   return s == Side::Both ? "both sides' error bounds are as wide" : "its error bound is the wider one";
 }
 
-std::string text_or_empty(const std::optional<ResultNumber>& x) { return x ? number_text(*x) : ""; }
+std::string text_or_empty(const std::optional<ResultNumber>& x, NumberStyle style, int digits) {
+  return x ? styled_number(*x, style, digits) : "";
+}
 
 }  // namespace
 
-std::string lhs_text(const ComparisonOutcome& c) { return text_or_empty(c.lhs); }
-std::string rhs_text(const ComparisonOutcome& c) { return text_or_empty(c.rhs); }
-std::string residual_text(const ComparisonOutcome& c) { return text_or_empty(c.residual); }
+std::string styled_number(const ResultNumber& x, NumberStyle style, int digits) {
+  switch (style) {
+    case NumberStyle::Readable: return readable_number(x, digits);
+    case NumberStyle::Compact: return compact_number(x, digits);
+    case NumberStyle::Exact: break;
+  }
+  return number_text(x);
+}
+
+std::string lhs_text(const ComparisonOutcome& c, NumberStyle style, int digits) {
+  return text_or_empty(c.lhs, style, digits);
+}
+std::string rhs_text(const ComparisonOutcome& c, NumberStyle style, int digits) {
+  return text_or_empty(c.rhs, style, digits);
+}
+std::string residual_text(const ComparisonOutcome& c, NumberStyle style, int digits) {
+  return text_or_empty(c.residual, style, digits);
+}
 std::string tolerance_text(const ComparisonOutcome& c) { return c.floating ? radius_text(c.floating->tolerance) : ""; }
 
 std::string tolerance_rule(Arithmetic a) {

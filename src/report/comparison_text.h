@@ -7,13 +7,24 @@
 
 #include "linkproof/check/arithmetic.h"
 #include "check/judge.h"
+#include "report/number_text.h"
 
 namespace linkproof {
 
+/// How a value is written (report/number_text.h): `Exact` as the arithmetic prints it ("p/q",
+/// every digit: the JSON's spelling); `Readable` an exact value with its decimal beside it, a
+/// long fraction by its decimal and size (readable_number); `Compact` for a table cell, a long
+/// fraction by its decimal and kLongFractionMark (compact_number: put long_fraction_note under
+/// the table). Floats are written as they are in every style.
+enum class NumberStyle { Exact, Readable, Compact };
+
 /// The text of a comparison's values ("" where there is none).
-std::string lhs_text(const ComparisonOutcome& c);
-std::string rhs_text(const ComparisonOutcome& c);
-std::string residual_text(const ComparisonOutcome& c);
+std::string lhs_text(const ComparisonOutcome& c, NumberStyle style = NumberStyle::Exact, int digits = kReadableDigits);
+std::string rhs_text(const ComparisonOutcome& c, NumberStyle style = NumberStyle::Exact, int digits = kReadableDigits);
+std::string residual_text(const ComparisonOutcome& c, NumberStyle style = NumberStyle::Exact,
+                          int digits = kReadableDigits);
+/// One value in a style.
+std::string styled_number(const ResultNumber& x, NumberStyle style, int digits = kReadableDigits);
 /// The derived tolerance of a floating-point comparison; "" in exact arithmetic.
 std::string tolerance_text(const ComparisonOutcome& c);
 

@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <cmath>
+
 #include "report/json_report.h"
 #include "report/mechanism_report.h"
+#include "report/number_text.h"
 
 namespace linkproof {
 
@@ -14,6 +17,20 @@ using PP = PlanePoint<Rational>;
 namespace {
 
 json vec_json(const Vec2<Rational>& v) { return json::array({format_rational(v.x), format_rational(v.y)}); }
+// The decimals of a point, for the "<key>_decimal" members beside exact points.
+json vec_decimal_json(const Vec2<Rational>& v) { return json::array({decimal_text(v.x), decimal_text(v.y)}); }
+
+// A coordinate as people read it (report/number_text.h): "3/2 = 1.5".
+std::string coordinate_text(const Rational& x) { return readable_number(x); }
+
+// The radius of a curvature centre as people read it: exact ("5/2 = 2.5", "sqrt(13) ≈ 3.605551275").
+std::string radius_readable(const Rational& squared) {
+  const std::string exact = exact_radius_text(squared);
+  if (exact.find("sqrt") == std::string::npos) return readable_number(parse_rational(exact));
+  return fmt::format("{} ≈ {:.10g}", exact, std::sqrt(cln::double_approx(squared)));
+}
+
+double radius_double(const Rational& squared) { return std::sqrt(cln::double_approx(squared)); }
 
 json point_json(const PP& p) {
   if (p.is_finite()) return vec_json(p.at);
@@ -22,9 +39,9 @@ json point_json(const PP& p) {
 }
 
 std::string point_text(const PP& p) {
-  if (p.is_finite()) return fmt::format("({}, {})", format_rational(p.at.x), format_rational(p.at.y));
+  if (p.is_finite()) return fmt::format("({}, {})", coordinate_text(p.at.x), coordinate_text(p.at.y));
   if (p.kind == PP::Kind::AtInfinity)
-    return fmt::format("at infinity, direction ({}, {})", format_rational(p.at.x), format_rational(p.at.y));
+    return fmt::format("at infinity, direction ({}, {})", coordinate_text(p.at.x), coordinate_text(p.at.y));
   return "undefined (" + p.reason + ")";
 }
 
@@ -35,8 +52,10 @@ json centre_json(const CentreEntry& e, const std::vector<std::string>& names) {
          {"velocity", vec_json(e.motion.v)}, {"acceleration", vec_json(e.motion.a)}};
   if (e.centre.is_finite()) {
     j["at"] = vec_json(e.centre.at);
+    j["at_decimal"] = vec_decimal_json(e.centre.at);
     const Rational r2 = norm2(e.centre.at - e.request.at);
     j["radius"] = exact_radius_text(r2);
+    j["radius_decimal"] = fmt::format("{:.10g}", radius_double(r2));
     j["radius_squared"] = format_rational(r2);
   } else if (e.centre.kind == PP::Kind::AtInfinity) {
     j["at_infinity"] = vec_json(e.centre.at);
@@ -91,7 +110,7 @@ json curvature_json(const CurvatureAnalysis& a, const std::vector<std::string>& 
   json poles = json::array(), centres = json::array(), reductions = json::array();
   for (const PoleEntry& p : a.poles) {
     json j{{"links", {name(names, p.i), name(names, p.k)}}};
-    if (p.pole.is_finite()) j["at"] = vec_json(p.pole.at);
+    if (p.pole.is_finite()) j["at"] = vec_json(p.pole.at), j["at_decimal"] = vec_decimal_json(p.pole.at);
     else if (p.pole.kind == PP::Kind::AtInfinity) j["at_infinity"] = vec_json(p.pole.at);
     else j["undefined"] = p.pole.reason;
     poles.push_back(j);
@@ -121,7 +140,7 @@ void write_curvature_text(std::ostream& out, const CurvatureAnalysis& a, const s
   for (const CentreEntry& e : a.centres) {
     fmt::print(out, "  {} in {}/{}: {}", e.request.point, name(names, e.request.moving), name(names, e.request.fixed),
                point_text(e.centre));
-    if (e.centre.is_finite()) fmt::print(out, ", radius {}", exact_radius_text(norm2(e.centre.at - e.request.at)));
+    if (e.centre.is_finite()) fmt::print(out, ", radius {}", radius_readable(norm2(e.centre.at - e.request.at)));
     fmt::print(out, "\n    pole {}, inflection pole {}\n", point_text(e.circle.pole), point_text(inflection_pole(e.circle)));
     fmt::print(out, "    Bobillier ({}): {}\n", e.bobillier_pairs,
                e.bobillier ? point_text(e.bobillier->gamma) : std::string("not constructed"));

@@ -1,7 +1,9 @@
 // Reports of the second-order work (mechanism/curvature_analysis.h): JSON and text.
 //
 // JSON contract (`linkproof curvature SCENE --json`; the same keys are added to `check --json`
-// when the scene asks for this work). Exact values are reduced "p/q" strings.
+// when the scene asks for this work). Exact values are reduced "p/q" strings; a finite pole or
+// centre also has "at_decimal" (its coordinates to 10 significant digits) and a centre
+// "radius_decimal", beside the exact ones (report/number_text.h).
 //   {"scene": "...",
 //    "poles": [{"links": ["0", "1"], "at": ["x", "y"]}                 // every pair of links
 //              | {"links": [..], "at_infinity": ["dx", "dy"]}          // omega_i = omega_j

@@ -1,6 +1,23 @@
 #include "report/document.h"
 
+#include <fmt/format.h>
+
 namespace linkproof::report {
+
+Block display_equation(const std::string& lhs_tex, const std::string& rhs_tex) {
+  Block b = display_math(lhs_tex + " = " + rhs_tex);
+  if (b.display.size() > kFoldTexChars)
+    b.fold = {math(lhs_tex + " = \\ldots"),
+              text(fmt::format(" (a long expression, {} characters of TeX: open to show it)", rhs_tex.size()))};
+  return b;
+}
+
+Block display_folded(const std::string& tex, const std::string& what) {
+  Block b = display_math(tex);
+  if (b.display.size() > kFoldTexChars)
+    b.fold = {text(fmt::format("{} (a long expression, {} characters of TeX: open to show it)", what, tex.size()))};
+  return b;
+}
 
 void add_reproduce_section(Document& d) {
   const Reproduce& r = d.reproduce;

@@ -5,9 +5,11 @@
 // The view is the bounding box of every primitive that is not marked `auxiliary`, widened to
 // include auxiliary points (construction points such as Q_j) only while they lie within
 // `max_zoom_out` times that box: a point far away (Q_j near infinity) does not shrink the
-// linkage to a dot; it is listed in `off_view` with its coordinates instead.
+// linkage to a dot; it is listed in `off_view` with its coordinates instead. A line to such a
+// point (an end at an auxiliary marker) does not widen the view either: the view clips it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,11 +69,23 @@ struct View {
 /// The world box shown (see the header comment), with a margin.
 View compute_view(const Drawing& d);
 
+/// The view is "much larger" than the linkage beyond this ratio of their larger sides.
+inline constexpr double kDetailRatio = 4;
+
+/// When construction points make the view much larger than the linkage itself (its patches,
+/// its segments but for their ends at auxiliary points, its non-auxiliary markers), that box with a margin: render_svg draws it as a
+/// second, enlarged panel beside the whole, so that the mechanism stays legible. nullopt
+/// otherwise.
+std::optional<View> detail_view(const Drawing& d);
+
 /// The drawing as a standalone SVG document; the larger side of the view is `width_px` pixels.
+/// With a detail_view, two panels side by side (each a nested svg that clips its lines): the
+/// whole, and the linkage enlarged to the whole's height.
 std::string render_svg(const Drawing& d, double width_px = 640);
 
 /// The drawing as a LaTeX picture environment drawn by \pdfliteral (pdfTeX; no package needed);
-/// the larger side of the view is `width_cm`.
+/// the larger side of the view is `width_cm`. With a detail_view, two pictures side by side
+/// (0.6 `width_cm` each): the whole and the linkage enlarged.
 std::string render_latex_picture(const Drawing& d, double width_cm = 12);
 
 /// "K'_1" -> TeX "K'_{1}", "beta_2" -> "\beta_{2}": labels of markers as TeX math. The label

@@ -43,19 +43,28 @@ json evidence_json(const SweepExample& e) {
 
 namespace {
 
-json rates_object(const std::vector<std::optional<ResultNumber>>& v) {
+json rates_object(const std::vector<std::optional<ResultNumber>>& v, bool decimal = false) {
   json o = json::object();
-  for (size_t j = 0; j < v.size(); ++j) o[std::to_string(j + 1)] = v[j] ? json(number_text(*v[j])) : json(nullptr);
+  for (size_t j = 0; j < v.size(); ++j)
+    o[std::to_string(j + 1)] = v[j] ? json(decimal ? decimal_text(*v[j]) : number_text(*v[j])) : json(nullptr);
   return o;
 }
 
+// A comparison's exact values get their decimals beside them: "lhs_decimal" beside "lhs", ...
+// (report/number_text.h decimal_text; additive: the exact strings stay as they were).
+void add_decimals(json& j, const ComparisonOutcome& c) {
+  for (const auto& [key, x] : {std::pair{"lhs", &c.lhs}, {"rhs", &c.rhs}, {"residual", &c.residual}})
+    if (*x && is_exact(**x) && j.contains(key)) j[std::string(key) + "_decimal"] = decimal_text(**x);
+}
+
 // With an `ask`, only the asked sides (null where undefined).
-json asked_rates_object(const std::vector<std::optional<ResultNumber>>& v, const SceneAsk& ask, bool dot) {
+json asked_rates_object(const std::vector<std::optional<ResultNumber>>& v, const SceneAsk& ask, bool dot,
+                        bool decimal = false) {
   json o = json::object();
   for (const AskedRate& r : ask.rates) {
     if (r.dot != dot) continue;
     const auto& x = v[static_cast<size_t>(std::stoi(r.subject.name) - 1)];
-    o[r.subject.name] = x ? json(number_text(*x)) : json(nullptr);
+    o[r.subject.name] = x ? json(decimal ? decimal_text(*x) : number_text(*x)) : json(nullptr);
   }
   return o;
 }
@@ -69,16 +78,22 @@ json claim_json(const ClaimOutcome& c) {
          {"statement", c.info.statement}};
   if (!c.info.note.empty()) j["note"] = c.info.note;
   // The headline comparison's evidence at the top level (the contract's lhs/rhs/residual).
-  const json headline = to_json(c.headline);  // named: items() must not outlive its json
+  json headline = to_json(c.headline);  // named: items() must not outlive its json
+  add_decimals(headline, c.headline);
   for (const auto& [k, v] : headline.items())
     if (k != "label" && k != "verdict") j[k] = v;
   if (!c.headline.label.empty()) j["headline"] = c.headline.label;
   if (!c.error.empty()) j["error"] = c.error;
   j["instances"] = json::array();
-  for (const auto& i : c.instances) j["instances"].push_back(to_json(i));
+  for (const auto& i : c.instances) {
+    json ij = to_json(i);
+    add_decimals(ij, i);
+    j["instances"].push_back(std::move(ij));
+  }
   j["terms"] = json::array();
   for (const auto& t : c.terms) {
     json tj = to_json(t);
+    add_decimals(tj, t);
     tj["monomial"] = t.label;  // lhs: the engine's exact coefficient; rhs: the formula's
     j["terms"].push_back(std::move(tj));
   }
@@ -129,7 +144,10 @@ json to_json(const PolygonCheck& check, const ClaimsStatus& status) {
            {{"n", check.n},
             {"omega", rates_object(check.omega)},
             {"omega_dot", rates_object(check.omega_dot)},
+            {"omega_decimal", rates_object(check.omega, true)},
+            {"omega_dot_decimal", rates_object(check.omega_dot, true)},
             {"D", number_text(check.determinant)},
+            {"D_decimal", decimal_text(check.determinant)},
             {"dead_centre", check.dead_centre}}},
           {"tolerance_rule", tolerance_rule(check.arithmetic)},
           {"claims", claims},
@@ -140,6 +158,8 @@ json to_json(const PolygonCheck& check, const ClaimsStatus& status) {
     j["ask"] = check.ask->describe();
     j["polygon"]["omega"] = asked_rates_object(check.omega, *check.ask, false);
     j["polygon"]["omega_dot"] = asked_rates_object(check.omega_dot, *check.ask, true);
+    j["polygon"]["omega_decimal"] = asked_rates_object(check.omega, *check.ask, false, true);
+    j["polygon"]["omega_dot_decimal"] = asked_rates_object(check.omega_dot, *check.ask, true, true);
   }
   return j;
 }

@@ -103,8 +103,8 @@ void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsSta
     if (!r.counterexample) continue;
     const MechanismCounterexample& x = *r.counterexample;
     for (const ComparisonOutcome& c : x.outcome.instances)
-      fmt::print(out, "    {}: lhs {}  rhs {}  ({})\n", c.label, c.lhs ? number_text(*c.lhs) : "undefined",
-                 c.rhs ? number_text(*c.rhs) : "undefined", to_string(c.verdict));
+      fmt::print(out, "    {}: lhs {}  rhs {}  ({})\n", c.label, c.lhs ? readable_number(*c.lhs) : "undefined",
+                 c.rhs ? readable_number(*c.rhs) : "undefined", to_string(c.verdict));
     fmt::print(out, "    counterexample scene (check-claim CLAIMS --scene FILE re-fails on it):\n");
     std::string line;
     for (char ch : x.scene_yaml) {

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "mechanism/fourbar_polygon.h"
+#include "report/number_rich.h"
 #include "report/number_text.h"
 #include "report/polygon_document.h"
 #include "svg_plot.h"
@@ -38,8 +39,36 @@ std::vector<Point2> link_outline(const Linkage& g, int k) {
   return pts;
 }
 
+// The values of a link's rates, "ω = …, ω̇ = …", for the headline.
+Rich link_rates_rich(const std::string& name, const ResultNumber& omega, const ResultNumber& omega_dot) {
+  Rich r = plain(name + ": ");
+  r.push_back(math("\\omega ="));
+  r.push_back(text(" "));
+  for (const Span& x : number_rich(omega)) r.push_back(x);
+  r.push_back(text(", "));
+  r.push_back(math("\\dot\\omega ="));
+  r.push_back(text(" "));
+  for (const Span& x : number_rich(omega_dot)) r.push_back(x);
+  return r;
+}
+
+// The summary opens with what a reader came for: the linkage drawn large beside the headline
+// (the asked values, the mobility, the claims at a glance).
 Section summary_section(const MechanismScene& scene, const MechanismCheck& check) {
   Section s{"summary", "Summary", {}, {}};
+  s.blocks.push_back(figure_block({scene.name + "-linkage",
+                                   "The linkage to scale: links as bars (two joints) or plates (three or more), "
+                                   "joints as circles, sliders on their guides (dashed), tracer points filled.",
+                                   mechanism_drawing(scene)}));
+  std::vector<Rich> headline;
+  if (check.ask)
+    for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
+      headline.push_back(link_rates_rich(check.link_names[k], check.omega[k], check.omega_dot[k]));
+  headline.push_back(plain(fmt::format("mobility {}: {} links, {} joints, {} independent loop{}", check.mobility,
+                                       scene.linkage.link_count(), scene.linkage.joint_count(), check.loops,
+                                       check.loops == 1 ? "" : "s")));
+  for (Rich& r : claims_at_a_glance(check.claims)) headline.push_back(std::move(r));
+  s.blocks.push_back(headline_block(std::move(headline)));
   int as_expected = 0;
   for (const auto& c : check.claims) as_expected += c.is_as_expected() ? 1 : 0;
   s.blocks.push_back(paragraph(plain(fmt::format(
@@ -67,30 +96,91 @@ Section summary_section(const MechanismScene& scene, const MechanismCheck& check
   return s;
 }
 
+// The linkage with the velocity (or acceleration) of every joint and point as an arrow from it,
+// all to one scale: the longest arrow is a third of the linkage's extent. `scale` receives the
+// drawing's length per unit of velocity (acceleration); 0 where every vector is zero.
+Drawing vector_drawing(const MechanismScene& scene, const MechanismCheck& check, bool acceleration, double& scale) {
+  Drawing d = mechanism_drawing(scene);
+  const View v = compute_view(d);
+  const double extent = std::max(v.x1 - v.x0, v.y1 - v.y0);
+  double longest = 0;
+  const auto vec = [&](const MechanismCheck::PointMotion& p) {
+    const auto& x = acceleration ? p.a : p.v;
+    return Point2{to_double(x[0]), to_double(x[1])};
+  };
+  for (const auto* list : {&check.joints, &check.points})
+    for (const auto& p : *list) {
+      const Point2 w = vec(p);
+      if (std::isfinite(w.x) && std::isfinite(w.y)) longest = std::max(longest, std::hypot(w.x, w.y));
+    }
+  scale = longest > 0 ? extent / 3 / longest : 0;
+  std::map<std::string, Point2> at;
+  for (const auto& m : d.markers) at.emplace(m.label, m.at);
+  const std::string colour = acceleration ? "#b8005c" : "#0050b8";
+  for (const auto* list : {&check.joints, &check.points})
+    for (const auto& p : *list) {
+      const auto it = at.find(p.name);
+      const Point2 w = vec(p);
+      if (it == at.end() || scale == 0 || !std::isfinite(w.x) || !std::isfinite(w.y) || std::hypot(w.x, w.y) == 0)
+        continue;
+      const Point2 from = it->second;
+      d.segments.push_back({from, {from.x + scale * w.x, from.y + scale * w.y}, colour, Stroke::Solid, true, ""});
+    }
+  return d;
+}
+
 Section mechanism_section(const MechanismScene& scene, const MechanismCheck& check) {
   Section s{"mechanism", "Mechanism", {}, {}};
-  s.blocks.push_back(figure_block({scene.name + "-linkage",
-                                   "The linkage to scale: links as bars (two joints) or plates (three or more), "
-                                   "joints as circles, sliders on their guides (dashed), tracer points filled.",
-                                   mechanism_drawing(scene)}));
+  if (!check.ask) {
+    for (const bool acceleration : {false, true}) {
+      double scale = 0;
+      Drawing d = vector_drawing(scene, check, acceleration, scale);
+      if (scale == 0) continue;
+      s.blocks.push_back(figure_block(
+          {scene.name + (acceleration ? "-accelerations" : "-velocities"),
+           fmt::format("{} of the joints and points to scale: an arrow of the drawing's unit length is {:.4g} units "
+                       "of {} (the longest arrow is a third of the drawing).",
+                       acceleration ? "Accelerations" : "Velocities", 1 / scale,
+                       acceleration ? "acceleration" : "velocity"),
+           std::move(d)}));
+    }
+  }
   Table links{{plain("link"), tex("\\omega"), tex("\\dot\\omega")}, {}};
   for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
     links.rows.push_back(
         {plain(check.link_names[k] + (check.link_names[k] == scene.linkage.link_name(scene.linkage.ground()) ? " (ground)" : "")),
-         plain(number_text(check.omega[k])), plain(number_text(check.omega_dot[k]))});
+         number_rich(check.omega[k]), number_rich(check.omega_dot[k])});
   if (!links.rows.empty()) {
     s.blocks.push_back(paragraph(plain(std::string("Angular velocity and acceleration of ") +
                                        (check.ask ? "the asked links" : "every link") + " relative to the ground (exact):")));
     s.blocks.push_back(table_block(std::move(links)));
   }
   Table pts{{plain("joint / point"), plain("velocity"), plain("acceleration"), plain("sliding rate, acceleration")}, {}};
+  const auto pair = [](const ResultNumber& x, const ResultNumber& y) {
+    Rich r = plain("(");
+    for (const Span& a : number_rich(x)) r.push_back(a);
+    r.push_back(text(", "));
+    for (const Span& b : number_rich(y)) r.push_back(b);
+    r.push_back(text(")"));
+    return r;
+  };
+  bool sliding = false;
   const auto add = [&](const MechanismCheck::PointMotion& p) {
-    pts.rows.push_back({plain(p.name), plain("(" + number_text(p.v[0]) + ", " + number_text(p.v[1]) + ")"),
-                        plain("(" + number_text(p.a[0]) + ", " + number_text(p.a[1]) + ")"),
-                        plain(p.slide ? number_text(*p.slide) + ", " + number_text(*p.slide_dot) : "")});
+    Rich slide;
+    if (p.slide) {
+      sliding = true;
+      slide = number_rich(*p.slide);
+      slide.push_back(text(", "));
+      for (const Span& b : number_rich(*p.slide_dot)) slide.push_back(b);
+    }
+    pts.rows.push_back({plain(p.name), pair(p.v[0], p.v[1]), pair(p.a[0], p.a[1]), std::move(slide)});
   };
   for (const auto& p : check.joints) add(p);
   for (const auto& p : check.points) add(p);
+  if (!sliding) {  // no prismatic joint: no empty column
+    pts.header.pop_back();
+    for (auto& row : pts.rows) row.pop_back();
+  }
   if (!pts.rows.empty() || !check.ask) s.blocks.push_back(table_block(std::move(pts)));
   return s;
 }
@@ -170,7 +260,12 @@ Section plans_section(const MechanismScene& scene, const MechanismCheck& check) 
                                      "The four-bar's acceleration polygon as the course notes draw it (docs/conventions.md §B): from the "
                                      "acceleration origin O_A, head to tail, A_A^n, A_A^t, A_BA^n, -A_B^n, then the "
                                      "tangential A_BA^t and -A_B^t close it; the dashed vector is A_A.",
-                                     *fb}));
+                                     *fb,
+                                     {text("The four-bar's acceleration polygon as the course notes draw it "
+                                           "(docs/conventions.md §B): from the acceleration origin "),
+                                      math("O_A"), text(", head to tail, "), math("A_A^n, A_A^t, A_{BA}^n, -A_B^n"),
+                                      text(", then the tangential "), math("A_{BA}^t"), text(" and "), math("-A_B^t"),
+                                      text(" close it; the dashed vector is "), math("A_A"), text(".")}}));
   return s;
 }
 
@@ -178,7 +273,7 @@ Section tables_section(const MechanismCheck& check) {
   Section s{"tables", "Catalogue tables", {}, {}};
   for (const auto& t : check.tables) {
     Table out{{plain("quantity"), plain("value (exact)")}, {}};
-    for (const auto& [k, v] : t.rows) out.rows.push_back({plain(k), plain(v)});
+    for (const auto& [k, v] : t.rows) out.rows.push_back({plain(k), value_rich(v)});
     Section sub{"table-" + t.title, t.title, {}, {}};
     sub.blocks.push_back(table_block(std::move(out)));
     s.subsections.push_back(std::move(sub));
@@ -199,7 +294,8 @@ Drawing mechanism_drawing(const MechanismScene& scene) {
     for (size_t a = 0; a < pts.size(); ++a) {
       if (pts.size() == 2 && a == 1) break;
       Segment seg{pts[a], pts[(a + 1) % pts.size()], col, Stroke::Solid, false, ""};
-      if (a == 0) seg.label = g.link_name(k);
+      // A link whose joints coincide (a slider block) is named by its joints, not over them.
+      if (a == 0 && std::hypot(seg.a.x - seg.b.x, seg.a.y - seg.b.y) > 1e-9) seg.label = g.link_name(k);
       d.segments.push_back(seg);
     }
   }
@@ -211,8 +307,9 @@ Drawing mechanism_drawing(const MechanismScene& scene) {
       // The guide: the line through the joint along its axis, 15 % of the drawing's extent each way.
       const View v = compute_view(d);
       const double r = 0.15 * std::max(v.x1 - v.x0, v.y1 - v.y0);
-      d.segments.push_back({{p.x - r * ux, p.y - r * uy}, {p.x + r * ux, p.y + r * uy}, "#555555", Stroke::Dashed, false,
-                            "guide " + j.name});
+      // In two halves, the label on the far one: not on top of the joint's own label.
+      d.segments.push_back({{p.x - r * ux, p.y - r * uy}, p, "#555555", Stroke::Dashed, false, ""});
+      d.segments.push_back({p, {p.x + r * ux, p.y + r * uy}, "#555555", Stroke::Dashed, false, "guide " + j.name});
     }
     const bool grounded = j.links[0] == g.ground() || j.links[1] == g.ground();
     d.markers.push_back({p, j.name, grounded ? "#000000" : "#333333", true, false});

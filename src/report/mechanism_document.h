@@ -1,9 +1,12 @@
 // The derivation report of a mechanism scene (any planar linkage of revolute and prismatic
 // pairs; docs/conventions.md §A7, §B, §C, §E), in this order:
-//   summary     mobility, loops, each claim with its verdict and what it rests on (exact);
-//   mechanism   the linkage drawn to scale (links as bars or plates, joints, sliders with their
-//               guides, tracer points) and the exact omega, omega-dot of every link and the
-//               velocity and acceleration of every joint and point;
+//   summary     the linkage drawn to scale (links as bars or plates, joints, sliders with their
+//               guides, tracer points) beside the headline (the asked values, the mobility, the
+//               claims at a glance); then mobility, loops, each claim with its verdict and what
+//               it rests on (exact);
+//   mechanism   the velocities and the accelerations of every joint and point drawn to scale as
+//               arrows on the linkage, and the exact omega, omega-dot of every link and the
+//               velocity and acceleration of every joint and point, each with its decimal;
 //   plans       (when asked) the velocity and acceleration plans: the image of every joint
 //               drawn from the origin o, each link's image joining its joints' images; for a
 //               four-bar also its acceleration polygon, head to tail as the

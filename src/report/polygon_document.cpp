@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "geometry/construction.h"
+#include "report/number_rich.h"
 #include "report/number_text.h"
 #include "canonical_latex.h"
 #include "svg_plot.h"
@@ -22,29 +23,68 @@ using GiNaC::ex;
 // The same text in every run (GiNaC's own printer follows an order that ASLR moves).
 std::string latex_of(const ex& e) { return canonical_latex(e); }
 
-/// An exact rational as TeX: "-7/3" -> "-\frac{7}{3}".
-std::string rational_tex(const Rational& q) {
-  const std::string t = format_rational(q);
-  const auto slash = t.find('/');
-  if (slash == std::string::npos) return t;
-  const bool neg = t[0] == '-';
-  return std::string(neg ? "-" : "") + "\\frac{" + t.substr(neg ? 1 : 0, slash - (neg ? 1 : 0)) + "}{" +
-         t.substr(slash + 1) + "}";
-}
-
-std::string point_tex(const Vec2<Rational>& p) { return "(" + rational_tex(p.x) + ",\\ " + rational_tex(p.y) + ")"; }
 
 Point2 to_point(const Vec2<Rational>& p) { return {cln::double_approx(p.x), cln::double_approx(p.y)}; }
 
-template <class V>
-Rich defined_tex(const Defined<V>& d, std::string (*f)(const V&)) {
-  if (d.has_value()) return tex(f(d.get()));
+Rich defined_rich(const Defined<Vec2<Rational>>& d) {
+  if (d.has_value()) return point_rich(d.get());
   return plain("undefined: " + d.quantity());
 }
 
+Rich defined_rich(const Defined<Rational>& d) {
+  if (d.has_value()) return number_rich(d.get());
+  return plain("undefined: " + d.quantity());
+}
+
+// A rate of the ground truth as the report shows it, or why it has none.
+Rich rate_rich(const std::optional<ResultNumber>& v, const char* missing) {
+  return v ? number_rich(*v) : plain(missing);
+}
+
 // ---------------------------------------------------------------- summary
+std::string construction_caption(int n) {
+  return "The polygon to scale (side " + std::to_string(n) +
+         " fixed, grey); per input side j in its colour: r_j moved to end in K_{n-2} (arrow from K'_j), the lines "
+         "K_nK'_j and K_{n-2}K_{n-1} (dashed) meeting in Q_j, the lines K_{n-1}K_n and K'_jK_{n-2} (thin) "
+         "meeting in P'_j, and the angle beta_j at Q_j.";
+}
+
+Rich construction_rich_caption(int n) {
+  return {text("The polygon to scale (side " + std::to_string(n) + " fixed, grey); per input side "), math("j"),
+          text(" in its colour: "), math("r_j"), text(" moved to end in "), math("K_{n-2}"), text(" (arrow from "),
+          math("K'_j"), text("), the lines "), math("K_nK'_j"), text(" and "), math("K_{n-2}K_{n-1}"),
+          text(" (dashed) meeting in "), math("Q_j"), text(", the lines "), math("K_{n-1}K_n"), text(" and "),
+          math("K'_jK_{n-2}"), text(" (thin) meeting in "), math("P'_j"), text(", and the angle "), math("\\beta_j"),
+          text(" at "), math("Q_j"), text(".")};
+}
+
+// The summary opens with what a reader came for: the polygon drawn large (with its construction
+// when that was computed), beside the headline results (the asked values, the claims at a glance).
 Section summary_section(const PolygonScene& scene, const PolygonCheck& check) {
   Section s{"summary", "Summary", {}, {}};
+  const bool construction = !check.ask || check.computed.construction;
+  s.blocks.push_back(figure_block(
+      {scene.name + "-construction",
+       construction ? construction_caption(check.n)
+                    : "The polygon to scale (side " + std::to_string(check.n) + " fixed, grey).",
+       construction ? polygon_construction_drawing(scene.polygon)
+                    : polygon_construction_drawing(scene.polygon, /*with_construction=*/false),
+       construction ? construction_rich_caption(check.n) : Rich{}}));
+  std::vector<Rich> headline;
+  if (check.ask)
+    for (const AskedRate& r : check.ask->rates) {
+      // The side as a number (the reader checked it is one): no text of the scene goes into math.
+      const int side = std::stoi(r.subject.name);
+      const auto& v = (r.dot ? check.omega_dot : check.omega)[static_cast<size_t>(side - 1)];
+      Rich item = tex(std::string(r.dot ? "\\dot\\omega_{" : "\\omega_{") + std::to_string(side) + "," +
+                      std::to_string(check.n) + "} =");
+      item.push_back(text(" "));
+      for (const Span& x : rate_rich(v, "undefined")) item.push_back(x);
+      headline.push_back(std::move(item));
+    }
+  if (check.dead_centre) headline.push_back(plain("dead centre: every claim is undefined"));
+  for (Rich& r : claims_at_a_glance(check.claims)) headline.push_back(std::move(r));
+  if (!headline.empty()) s.blocks.push_back(headline_block(std::move(headline)));
   int as_expected = 0;
   for (const auto& c : check.claims) as_expected += c.is_as_expected() ? 1 : 0;
   s.blocks.push_back(paragraph(
@@ -60,18 +100,6 @@ Section summary_section(const PolygonScene& scene, const PolygonCheck& check) {
     for (const auto& item : check.ask->describe()) asked += (asked.empty() ? "" : "; ") + item;
     s.blocks.push_back(paragraph(plain("The scene asks for " + asked +
                                        "; nothing else was computed, and the sections of what was not needed are left out.")));
-    if (!check.ask->rates.empty()) {
-      Table t{{plain("asked"), plain("value")}, {}};
-      for (const AskedRate& r : check.ask->rates) {
-        // The side as a number (the reader checked it is one): no text of the scene goes into math.
-        const int side = std::stoi(r.subject.name);
-        const auto& v = (r.dot ? check.omega_dot : check.omega)[static_cast<size_t>(side - 1)];
-        t.rows.push_back({tex(std::string(r.dot ? "\\dot\\omega_{" : "\\omega_{") + std::to_string(side) + "," +
-                              std::to_string(check.n) + "}"),
-                          plain(v ? number_text(*v) : "undefined")});
-      }
-      s.blocks.push_back(table_block(std::move(t)));
-    }
   }
   if (check.dead_centre)
     s.blocks.push_back(paragraph(plain("Dead centre: " + check.dead_centre_reason +
@@ -101,8 +129,8 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
     };
     if (check.ask && !asked(false) && !asked(true)) continue;  // only the asked rates
     values.rows.push_back({plain(std::to_string(j) + (j <= m ? " (input)" : j == n ? " (fixed)" : " (solved)")),
-                           plain(w ? number_text(*w) : check.ask && !asked(false) ? "not asked" : "undefined"),
-                           plain(wd ? number_text(*wd) : check.ask && !asked(true) ? "not asked" : "undefined")});
+                           rate_rich(w, check.ask && !asked(false) ? "not asked" : "undefined"),
+                           rate_rich(wd, check.ask && !asked(true) ? "not asked" : "undefined")});
   }
   if (n > kSymbolicReportMaxN) {
     s.blocks.push_back(paragraph(
@@ -121,24 +149,24 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
   const std::string N = std::to_string(n), n1 = std::to_string(n - 1), n2 = std::to_string(n - 2);
   s.blocks.push_back(paragraph({text("Loop closure (eq. 1), side "), math(N), text(" fixed ("),
                                 math("\\theta_{" + N + "}"), text(" constant):")}));
-  s.blocks.push_back(display_math(latex_of(sol.closure[0]) + " = 0"));
-  s.blocks.push_back(display_math(latex_of(sol.closure[1]) + " = 0"));
+  s.blocks.push_back(display_folded(latex_of(sol.closure[0]) + " = 0", "the loop closure, x component"));
+  s.blocks.push_back(display_folded(latex_of(sol.closure[1]) + " = 0", "the loop closure, y component"));
   s.blocks.push_back(paragraph({text("First time derivative, with "), math("L_j\\cos\\theta_j = x_j"), text(", "),
                                 math("L_j\\sin\\theta_j = y_j"), text(" (the side components of "),
                                 math("r_j"), text("):")}));
-  s.blocks.push_back(display_math(latex_of(sol.velocity[0]) + " = 0"));
-  s.blocks.push_back(display_math(latex_of(sol.velocity[1]) + " = 0"));
+  s.blocks.push_back(display_folded(latex_of(sol.velocity[0]) + " = 0", "the first time derivative, x component"));
+  s.blocks.push_back(display_folded(latex_of(sol.velocity[1]) + " = 0", "the first time derivative, y component"));
   s.blocks.push_back(paragraph(plain("Second time derivative:")));
-  s.blocks.push_back(display_math(latex_of(sol.acceleration[0]) + " = 0"));
-  s.blocks.push_back(display_math(latex_of(sol.acceleration[1]) + " = 0"));
+  s.blocks.push_back(display_folded(latex_of(sol.acceleration[0]) + " = 0", "the second time derivative, x component"));
+  s.blocks.push_back(display_folded(latex_of(sol.acceleration[1]) + " = 0", "the second time derivative, y component"));
   s.blocks.push_back(paragraph({text("Solved by Cramer's rule with "), math("D = r_{" + n2 + "}\\times r_{" + n1 + "}"),
                                 text(" = "), math(latex_of(sol.determinant)), text(":")}));
-  s.blocks.push_back(display_math("\\omega_{" + n1 + "," + N + "} = " + latex_of(sol.omega_n1.normal())));
-  s.blocks.push_back(display_math("\\omega_{" + n2 + "," + N + "} = " + latex_of(sol.omega_n2.normal())));
+  s.blocks.push_back(display_equation("\\omega_{" + n1 + "," + N + "}", latex_of(sol.omega_n1.normal())));
+  s.blocks.push_back(display_equation("\\omega_{" + n2 + "," + N + "}", latex_of(sol.omega_n2.normal())));
   // omega-dot in the structural form the engine solves (omega of the solved sides as symbols).
   const ex wd1 = sol.omega_dot_n1, wd2 = sol.omega_dot_n2;
-  s.blocks.push_back(display_math("\\dot\\omega_{" + n1 + "," + N + "} = " + latex_of(wd1)));
-  s.blocks.push_back(display_math("\\dot\\omega_{" + n2 + "," + N + "} = " + latex_of(wd2)));
+  s.blocks.push_back(display_equation("\\dot\\omega_{" + n1 + "," + N + "}", latex_of(wd1)));
+  s.blocks.push_back(display_equation("\\dot\\omega_{" + n2 + "," + N + "}", latex_of(wd2)));
 
   // Coefficients of omega-dot_{n-1,n} in the input rates (ground_truth.h: by differentiation):
   // with an ask, only when an asked claim compares them term by term.
@@ -166,9 +194,14 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
     for (int l = j + 1; l <= m; ++l)
       rows.emplace_back("\\omega_{" + std::to_string(j) + "}\\omega_{" + std::to_string(l) + "}",
                         wd1.diff(sym.omega(j)).diff(sym.omega(l)));
-  for (size_t k = 0; k < rows.size(); ++k)
-    t.rows.push_back({tex(rows[k].first), tex(latex_of(rows[k].second.normal())),
-                      tex(k < flat.size() ? rational_tex(flat[k]) : "")});
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const std::string coefficient = latex_of(rows[k].second.normal());
+    Rich cell = tex(coefficient);
+    if (coefficient.size() > kFoldTexChars)
+      cell = {folded(math(coefficient), fmt::format("a rational function, {} characters of TeX: open to show it",
+                                                    coefficient.size()))};
+    t.rows.push_back({tex(rows[k].first), std::move(cell), k < flat.size() ? number_rich(flat[k]) : plain("")});
+  }
   s.blocks.push_back(table_block(std::move(t)));
   s.blocks.push_back(paragraph(plain("Exact values on this scene:")));
   s.blocks.push_back(table_block(std::move(values)));
@@ -222,31 +255,24 @@ Section construction_section(const PolygonScene& scene) {
       {text("Four-bar j is "), math("K'_j K_{n-2} K_{n-1} K_n"), text(" with "), math("K'_j = K_{n-2} - r_j"),
        text("; "), math("Q_j = K_{n-2}K_{n-1} \\cap K_nK'_j"), text(", "), math("P'_j = K_{n-1}K_n \\cap K'_jK_{n-2}"),
        text("; the ratios are directed segments and "), math("\\beta_j > 0"),
-       text(" iff P'_j → Q_j → K_{n-1} is counter-clockwise (docs/conventions.md §A3). Exact values:")}));
+       text(" iff "), math("P'_j \\to Q_j \\to K_{n-1}"),
+       text(" is counter-clockwise (docs/conventions.md §A3). Exact values, each with its decimal:")}));
   Table t{{plain("j"), tex("K'_j"), tex("Q_j"), tex("P'_j"), tex("i_{n-1,j}"), tex("i_{n-2,j}"), tex("\\cot\\beta_j"),
            tex("\\lambda_j")},
           {}};
   for (const auto& c : cs)
-    t.rows.push_back({plain(std::to_string(c.j)), tex(point_tex(c.k_prime)), defined_tex(c.q, &point_tex),
-                      defined_tex(c.p_prime, &point_tex), defined_tex(c.i_out, &rational_tex),
-                      defined_tex(c.i_cpl, &rational_tex), defined_tex(c.cot_beta, &rational_tex),
-                      defined_tex(c.lambda, &rational_tex)});
+    t.rows.push_back({plain(std::to_string(c.j)), point_rich(c.k_prime), defined_rich(c.q), defined_rich(c.p_prime),
+                      defined_rich(c.i_out), defined_rich(c.i_cpl), defined_rich(c.cot_beta), defined_rich(c.lambda)});
   s.blocks.push_back(table_block(std::move(t)));
   const Rational D = p.dead_centre_determinant();
   if (!cln::zerop(D)) {
     const Vec2<Rational> a = p.side(n - 2), b = p.side(n - 1);
     s.blocks.push_back(paragraph({text("The signed angle "), math("\\varphi = (r_{n-2}, r_{n-1})"), text(": "),
-                                  math("D = " + rational_tex(D)), text(", "),
-                                  math("\\cot\\varphi = " + rational_tex(dot(a, b) / D)), text(", "),
-                                  math("|r_{n-2}|^2/D = " + rational_tex(norm2(a) / D)), text(".")}));
+                                  math("D = " + number_tex(D)), text(", "),
+                                  math("\\cot\\varphi = " + number_tex(dot(a, b) / D)), text(", "),
+                                  math("|r_{n-2}|^2/D = " + number_tex(norm2(a) / D)), text(".")}));
   }
-  Figure f{scene.name + "-construction",
-           "The polygon to scale (side " + std::to_string(n) +
-               " fixed, grey); per input side j in its colour: r_j moved to end in K_{n-2} (arrow from K'_j), the lines "
-               "K_nK'_j and K_{n-2}K_{n-1} (dashed) meeting in Q_j, the lines K_{n-1}K_n and K'_jK_{n-2} (thin) "
-               "meeting in P'_j, and the angle beta_j at Q_j.",
-           construction_drawing(p, cs)};
-  s.blocks.push_back(figure_block(std::move(f)));
+  s.blocks.push_back(paragraph(plain("The construction is drawn at the top of the report (Summary).")));
   return s;
 }
 
@@ -280,9 +306,9 @@ Section numerics_section(GroundTruthEngine& engine, const std::vector<Claim>& ca
 
 }  // namespace
 
-Drawing polygon_construction_drawing(const Polygon<Rational>& polygon) {
+Drawing polygon_construction_drawing(const Polygon<Rational>& polygon, bool with_construction) {
   std::vector<FourBarConstruction<Rational>> cs;
-  for (int j = 1; j <= polygon.n() - 3; ++j) cs.push_back(construct_four_bar(polygon, j));
+  for (int j = 1; with_construction && j <= polygon.n() - 3; ++j) cs.push_back(construct_four_bar(polygon, j));
   return construction_drawing(polygon, cs);
 }
 

@@ -6,8 +6,8 @@
 //                 omega, omega-dot of sides n-2, n-1 as GiNaC prints them in LaTeX, and the
 //                 coefficients of omega-dot_j, omega_j^2, omega_j omega_l of omega-dot_{n-1,n}
 //                 (symbolic for n <= kSymbolicReportMaxN, their values always);
-//   construction  K'_j, Q_j, P'_j, i_{n-1,j}, i_{n-2,j}, cot beta_j, lambda_j, phi, exact, and the
-//                 polygon drawn to scale with the points, the lines used and beta_j;
+//   construction  K'_j, Q_j, P'_j, i_{n-1,j}, i_{n-2,j}, cot beta_j, lambda_j, phi, exact with
+//                 their decimals (the drawing is the summary's);
 //   terms         the term-by-term tables of the claims that have them ((22) among them);
 //   errata        each erratum reading beside its corrected form, with this scene as the
 //                 counterexample where the reading fails here;
@@ -39,11 +39,17 @@ Document build_polygon_document(GroundTruthEngine& engine, const std::vector<Cla
                                 const PolygonReportOptions& options);
 
 /// The polygon to scale with the construction of every four-bar j (K'_j, Q_j, P'_j, beta_j and
-/// the lines that meet in Q_j and P'_j); points that do not exist are left out.
-Drawing polygon_construction_drawing(const Polygon<Rational>& polygon);
+/// the lines that meet in Q_j and P'_j); points that do not exist are left out. Without
+/// `with_construction`, the polygon alone.
+Drawing polygon_construction_drawing(const Polygon<Rational>& polygon, bool with_construction = true);
 
 /// "what the verdict rests on" for one claim outcome, in words (shared by the mechanism report).
 std::string verdict_basis(const ClaimOutcome& c, Arithmetic a);
+
+/// The claims at a glance, for the headline of a report: "17 of 17 true claims hold", "12 of 13
+/// erratum readings fail, as expected (1 coincides with the truth on this scene)", and either
+/// "every claim as expected" or "N NOT as expected: ids".
+std::vector<Rich> claims_at_a_glance(const std::vector<ClaimOutcome>& claims);
 
 /// The summary table of claim outcomes (claim, statement, expected, verdict, rests on).
 Table claim_summary_table(const std::vector<ClaimOutcome>& claims, Arithmetic a);

@@ -4,7 +4,9 @@
 
 #include <map>
 
+#include "report/number_rich.h"
 #include "report/polygon_document.h"
+#include "report/statement_tex.h"
 #include "report/prove_report.h"
 
 namespace linkproof::report {
@@ -42,7 +44,9 @@ Section claim_subsection(const json& r, const DataClaim* claim) {
   const std::string id = str(r, "id");
   Section s{"proof-" + id, id, {}, {}};
   if (claim) {
-    s.blocks.push_back(paragraph(plain(claim->info.source + ": " + claim->info.statement)));
+    Rich statement = plain(claim->info.source + ": ");
+    for (Span& x : statement_rich(claim->info.statement)) statement.push_back(std::move(x));
+    s.blocks.push_back(paragraph(std::move(statement)));
     if (!claim->info.note.empty()) s.blocks.push_back(paragraph(plain("Note: " + claim->info.note)));
   }
   s.blocks.push_back(paragraph(plain(fmt::format("Verdict: {} (expected: {}{}); rests on {}.", str(r, "verdict"),
@@ -117,13 +121,16 @@ Document build_proof_document(const ClaimFile& file, const std::vector<ProofResu
     Section sub{"counterexample-" + results[k].id, results[k].id, {}, {}};
     Table diff{{plain("comparison"), plain("lhs"), plain("rhs"), plain("residual")}, {}};
     for (const auto& e : j["counterexample"]["differing"])
-      diff.rows.push_back({plain(str(e, "label")), plain(str(e, "lhs")), plain(str(e, "rhs")), plain(str(e, "residual"))});
+      diff.rows.push_back({plain(str(e, "label")), value_rich(str(e, "lhs")), value_rich(str(e, "rhs")),
+                           value_rich(str(e, "residual"))});
     sub.blocks.push_back(paragraph(plain("Where the claim fails on this exact configuration:")));
     sub.blocks.push_back(table_block(std::move(diff)));
     sub.blocks.push_back(figure_block({"counterexample-" + results[k].id,
                                        "The counterexample polygon to scale with its construction (K'_j, Q_j, P'_j, "
                                        "beta_j).",
-                                       polygon_construction_drawing(c.polygon)}));
+                                       polygon_construction_drawing(c.polygon),
+                                       {text("The counterexample polygon to scale with its construction ("),
+                                        math("K'_j, Q_j, P'_j, \\beta_j"), text(").")}}));
     sub.blocks.push_back(paragraph(plain("The scene (`linkproof check` or `linkproof report` reads it):")));
     sub.blocks.push_back(code_block(c.scene_yaml));
     counter.subsections.push_back(std::move(sub));

@@ -6,7 +6,8 @@ namespace {
 
 std::string rich_tex(const Rich& r) {
   std::string out;
-  for (const auto& s : r) out += s.math ? "$" + s.text + "$" : latex_escape(s.text);
+  // A folded span: math in full, plain text by its fold line (document.h).
+  for (const auto& s : r) out += s.math ? "$" + s.text + "$" : latex_escape(s.fold.empty() ? s.text : s.fold);
   return out;
 }
 
@@ -30,6 +31,7 @@ void block_tex(const Block& b, std::string& out) {
       break;
     case Block::Kind::Code: out += latex_verbatim(b.code) + "\n"; break;
     case Block::Kind::List:
+    case Block::Kind::Headline:
       out += "\\begin{itemize}\n";
       for (const auto& i : b.items) out += "\\item " + shielded(rich_tex(i)) + "\n";
       out += "\\end{itemize}\n\n";
@@ -53,8 +55,11 @@ void block_tex(const Block& b, std::string& out) {
       break;
     }
     case Block::Kind::Figure: {
-      out += "\\begin{figure}[htbp]\\centering\n" + render_latex_picture(b.figure.drawing) + "\\caption{" +
-             latex_escape(b.figure.caption);
+      // The plain caption for the list of figures (braced: a ']' in it cannot end the option);
+      // the shown one with its formulas.
+      out += "\\begin{figure}[htbp]\\centering\n" + render_latex_picture(b.figure.drawing) + "\\caption[{" +
+             latex_escape(b.figure.caption) + "}]{" +
+             (b.figure.rich_caption.empty() ? latex_escape(b.figure.caption) : rich_tex(b.figure.rich_caption));
       const View v = compute_view(b.figure.drawing);
       if (!v.off_view.empty()) {
         out += " Outside the view:";
@@ -81,6 +86,7 @@ std::string render_latex(const Document& d) {
       "\\documentclass[a4paper,10pt]{article}\n"
       "\\usepackage[utf8]{inputenc}\n"
       "\\usepackage{amsmath,amssymb,longtable,graphicx}\n"
+      "\\providecommand{\\lt}{<}\\providecommand{\\gt}{>}\n"
       "\\setlength{\\textwidth}{16cm}\\setlength{\\oddsidemargin}{0cm}\\setlength{\\evensidemargin}{0cm}\n"
       "\\setlength{\\textheight}{24cm}\\setlength{\\topmargin}{-1.5cm}\n"
       "\\setlength{\\parindent}{0pt}\\setlength{\\parskip}{0.5ex}\n"

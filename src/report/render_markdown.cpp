@@ -8,7 +8,9 @@ namespace {
 // such (markdown_escape's block_start).
 std::string rich_md(const Rich& r, bool block_start = false) {
   std::string out;
-  for (const auto& s : r) out += s.math ? "$" + s.text + "$" : markdown_escape(s.text, block_start && out.empty());
+  // A folded span: math in full, plain text by its fold line (document.h).
+  for (const auto& s : r)
+    out += s.math ? "$" + s.text + "$" : markdown_escape(s.fold.empty() ? s.text : s.fold, block_start && out.empty());
   return out;
 }
 
@@ -26,6 +28,7 @@ void block_md(const Block& b, std::string& out, std::map<std::string, std::strin
     case Block::Kind::DisplayMath: out += "$$\n" + b.display + "\n$$\n\n"; break;
     case Block::Kind::Code: out += markdown_code_block(b.code) + "\n"; break;
     case Block::Kind::List:
+    case Block::Kind::Headline:
       for (const auto& i : b.items) out += "- " + rich_md(i, true) + "\n";
       out += "\n";
       break;
@@ -48,7 +51,8 @@ void block_md(const Block& b, std::string& out, std::map<std::string, std::strin
     case Block::Kind::Figure: {
       const std::string name = figure_file_name(b.figure.id, files);
       files[name] = render_svg(b.figure.drawing);
-      out += "![" + markdown_escape(b.figure.caption) + "](" + name + ")\n\n*" + markdown_escape(b.figure.caption);
+      out += "![" + markdown_escape(b.figure.caption) + "](" + name + ")\n\n*" +
+             (b.figure.rich_caption.empty() ? markdown_escape(b.figure.caption) : rich_md(b.figure.rich_caption));
       const View v = compute_view(b.figure.drawing);
       if (!v.off_view.empty()) {
         out += " Outside the view:";

@@ -75,6 +75,27 @@ TEST(Cli, CheckJsonHonoursTheContract) {
   EXPECT_TRUE(found);
 }
 
+// Issue 27: beside every exact value of check --json, its decimal under "<key>_decimal"
+// (additive: the exact strings are unchanged).
+TEST(Cli, CheckJsonAddsTheDecimalBesideEachExactValue) {
+  const CliRun r = run_cli({"check", scene("pentagon.yaml"), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["polygon"]["omega_decimal"]["3"], "1.545454545");
+  EXPECT_EQ(j["polygon"]["omega_dot_decimal"]["4"], "2.821187077");
+  EXPECT_EQ(j["polygon"]["omega_dot_decimal"]["5"], "0");
+  EXPECT_EQ(j["polygon"]["D_decimal"], "-22");
+  for (const auto& c : j["claims"]) {
+    if (c["id"] != "dijksman1966.eq22") continue;
+    EXPECT_EQ(c["lhs"], "3755/1331");
+    EXPECT_EQ(c["lhs_decimal"], "2.821187077");
+    EXPECT_EQ(c["rhs_decimal"], "2.821187077");
+    EXPECT_EQ(c["residual_decimal"], "0");
+    EXPECT_EQ(c["terms"][0]["lhs_decimal"].is_string(), true) << c["terms"][0].dump();
+    EXPECT_EQ(c["instances"][0]["rhs_decimal"].is_string(), true) << c["instances"][0].dump();
+  }
+}
+
 TEST(Cli, CheckInDoubleStatesItsToleranceRule) {
   const CliRun r = run_cli({"check", scene("pentagon.yaml"), "--arith", "double", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;

@@ -32,6 +32,24 @@ const json& claim(const json& j, const std::string& id) {
   return none;
 }
 
+// Issue 27: decimals beside the exact values, in the JSON (additive) and the text.
+TEST(CurvatureCli, PolesAndCentresHaveTheirDecimalsBesideTheExactValues) {
+  const json j = run_json({"curvature", scene("seed001_fourbar_curvature.yaml"), "--json"});
+  const json& c = j["curvature_centres"][0];
+  EXPECT_EQ(c["at"], json::array({"10923/1222", "17083/1222"}));
+  EXPECT_EQ(c["at_decimal"], json::array({"8.938625205", "13.97954173"}));
+  EXPECT_EQ(c["radius"], "sqrt(3125/746642)");
+  EXPECT_EQ(c["radius_decimal"], "0.06469471482");
+  for (const auto& p : j["poles"]) {
+    if (p["links"] == json::array({"1", "3"})) {
+      EXPECT_EQ(p["at_decimal"], json::array({"11", "14.66666667"}));
+    }
+  }
+  const auto r = run_cli({"curvature", scene("seed001_fourbar_curvature.yaml")});
+  EXPECT_NE(r.out.find("P_1,3      (11, 44/3 ≈ 14.66666667)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("radius sqrt(3125/746642) ≈ 0.06469471482"), std::string::npos) << r.out;
+}
+
 TEST(CurvatureCli, Seed001CouplerPointCentreByTheAnalyticRouteAndByBobillier) {
   const json j = run_json({"curvature", scene("seed001_fourbar_curvature.yaml"), "--json"});
   const json& c = j["curvature_centres"][0];

@@ -27,6 +27,7 @@
 #include "report/escape.h"
 #include "report/mechanism_document.h"
 #include "report/render.h"
+#include "report/statement_tex.h"
 
 namespace {
 
@@ -61,9 +62,26 @@ std::string twin(const std::string& s) {
   return u + 1 < s.size() ? "x_x" : "x_";
 }
 
+// A claim's statement is typeset when it is made of formula characters alone
+// (report/statement_tex.h): then it is harmless by construction and is its own twin (its math
+// spans are the structure it must have); otherwise it is plain text, twinned by a plain word.
+std::string statement_twin(const std::string& s) {
+  if (s.empty()) return "";
+  for (const Span& span : statement_rich(s))
+    if (span.math) return s;
+  return "xx";
+}
+
+// A term label of the engine's form ("omega[1]*omega[2]") is typeset likewise: its own twin.
+std::string term_label_twin(const std::string& s) {
+  const Rich r = term_label_rich(s);
+  return r.size() == 1 && r[0].math ? s : twin(s);
+}
+
 Strings twin_of(const Strings& in) {
   Strings out;
-  for (const auto& s : in.s) out.s.push_back(twin(s));
+  for (std::size_t k = 0; k < in.s.size(); ++k)
+    out.s.push_back(k == 13 ? statement_twin(in.s[k]) : k == 15 ? term_label_twin(in.s[k]) : twin(in.s[k]));
   return out;
 }
 

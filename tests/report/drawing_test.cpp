@@ -32,6 +32,52 @@ TEST(ReportDrawing, FarConstructionPointIsListedNotShrinkingTheLinkage) {
   EXPECT_NE(v.off_view[0].find("Q_1"), std::string::npos);
 }
 
+// The construction draws lines to Q_j: a line to a far point must not widen the view either
+// (before, every segment's ends counted, so Q_j near infinity shrank the linkage to a dot).
+TEST(ReportDrawing, FarConstructionPointReachedByALineDoesNotShrinkTheLinkage) {
+  Drawing d = unit_square_with({1e6, 0});
+  d.segments.push_back(Segment{{1, 0}, {1e6, 0}, "#aa0000", Stroke::Dashed, false, ""});
+  const View v = compute_view(d);
+  EXPECT_LT(v.x1, 10);
+  ASSERT_EQ(v.off_view.size(), 1u);
+}
+
+TEST(ReportDrawing, NearConstructionPointsKeepOnePanel) {
+  EXPECT_FALSE(detail_view(unit_square_with({3, 2})).has_value());
+  EXPECT_EQ(render_svg(unit_square_with({3, 2})).find("the linkage enlarged"), std::string::npos);
+}
+
+TEST(ReportDrawing, AConstructionMuchLargerThanTheLinkageGetsAnEnlargedPanel) {
+  Drawing d = unit_square_with({5, 5});
+  d.segments.push_back(Segment{{1, 1}, {5, 5}, "#aa0000", Stroke::Dashed, false, ""});
+  const auto detail = detail_view(d);
+  ASSERT_TRUE(detail.has_value());
+  EXPECT_LT(detail->x1 - detail->x0, 2);  // the unit square with a margin
+  const std::string svg = render_svg(d);
+  EXPECT_NE(svg.find("the linkage enlarged"), std::string::npos);
+  size_t panels = 0;
+  for (size_t at = svg.find("<svg x="); at != std::string::npos; at = svg.find("<svg x=", at + 1)) ++panels;
+  EXPECT_EQ(panels, 2u);
+}
+
+TEST(ReportDrawing, LatexPictureOfAConstructionMuchLargerThanTheLinkageHasTheLinkageEnlargedBeside) {
+  Drawing d = unit_square_with({5, 5});
+  d.segments.push_back(Segment{{1, 1}, {5, 5}, "#aa0000", Stroke::Dashed, false, ""});
+  const std::string tex = render_latex_picture(d);
+  size_t pictures = 0;
+  for (size_t at = tex.find("\\begin{picture}"); at != std::string::npos; at = tex.find("\\begin{picture}", at + 1)) ++pictures;
+  EXPECT_EQ(pictures, 2u);
+  EXPECT_EQ(render_latex_picture(unit_square_with({3, 2})).find("\\quad"), std::string::npos);
+}
+
+TEST(ReportDrawing, SvgWritesGreekNamesOfLabelsAsLetters) {
+  Drawing d = unit_square_with({3, 2});
+  d.angles.push_back({{0, 0}, {1, 0}, {0, 1}, "beta_1", "#aa3300"});
+  const std::string svg = render_svg(d);
+  EXPECT_NE(svg.find(">β<tspan baseline-shift=\"sub\" font-size=\"75%\">1</tspan>"), std::string::npos);
+  EXPECT_EQ(svg.find(">beta<"), std::string::npos);
+}
+
 TEST(ReportDrawing, SvgHasEverySegmentMarkerAndSubscriptLabel) {
   const std::string svg = render_svg(unit_square_with({3, 2}));
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);

@@ -1,7 +1,9 @@
 // The three renderers of a report document: escaping, math, figures, sections.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <fstream>
 
 #include "report/render.h"
@@ -147,6 +149,72 @@ TEST(ReportRender, HtmlEscapeReplacesWhatXmlForbids) {
   EXPECT_EQ(html_escape(std::string("a\x01") + "b\x7f" + "\xff" + "<\"&>\tc\n"),
             "a" + fffd + "b" + fffd + fffd + "&lt;&quot;&amp;&gt;\tc\n");
   EXPECT_EQ(html_escape("ω̇ K'_1"), "ω̇ K'_1");  // valid UTF-8 is kept
+}
+
+// A long value or formula: HTML folds it behind its line in <details>; Markdown and LaTeX show
+// math in full and plain text by its line (a fraction of hundreds of digits is for --json).
+Document folded_document() {
+  Document d;
+  d.title = "Folds";
+  Section s{"summary", "Summary", {}, {}};
+  s.blocks.push_back(table_block({{plain("value"), plain("coefficient")},
+                                  {{{folded(text("123456789/1000"), "≈ 123456.789 (exact: 13 digits)")},
+                                    {folded(math("x^{2}+y^{2}"), "a rational function")}}}}));
+  s.blocks.push_back(display_equation("\\omega_{4,5}", std::string(kFoldTexChars, 'x')));
+  s.blocks.push_back(display_equation("\\omega_{3,5}", "x"));
+  d.sections.push_back(s);
+  return d;
+}
+
+TEST(ReportRender, HtmlFoldsALongValueBehindItsLineInDetails) {
+  const std::string html = render_html(folded_document(), std::nullopt);
+  EXPECT_NE(html.find("<details class=\"lp-fold\"><summary>≈ 123456.789 (exact: 13 digits)</summary><div "
+                      "class=\"lp-folded\">123456789/1000</div></details>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<summary>a rational function</summary><div class=\"lp-folded\"><span class=\"lp-math\""),
+            std::string::npos);
+}
+
+TEST(ReportRender, DisplayEquationFoldsOnlyALongOne) {
+  const std::string html = render_html(folded_document(), std::nullopt);
+  size_t folds = 0;
+  for (size_t at = html.find("class=\"lp-fold lp-fold-display\""); at != std::string::npos;
+       at = html.find("class=\"lp-fold lp-fold-display\"", at + 1))
+    ++folds;
+  EXPECT_EQ(folds, 1u);  // the long equation only
+  EXPECT_NE(html.find("data-tex=\"\\omega_{4,5} = \\ldots\""), std::string::npos);
+  EXPECT_NE(html.find("<div class=\"lp-math lp-display\" data-tex=\"\\omega_{3,5} = x\">"), std::string::npos);
+}
+
+TEST(ReportRender, MarkdownAndLatexShowFoldedMathInFullAndFoldedTextByItsLine) {
+  std::map<std::string, std::string> files;
+  const std::string md = render_markdown(folded_document(), files);
+  EXPECT_NE(md.find("≈ 123456.789 (exact: 13 digits)"), std::string::npos);
+  EXPECT_EQ(md.find("123456789/1000"), std::string::npos);
+  EXPECT_NE(md.find("$x^{2}+y^{2}$"), std::string::npos);
+  const std::string tex = render_latex(folded_document());
+  EXPECT_EQ(tex.find("123456789/1000"), std::string::npos);
+  EXPECT_NE(tex.find("$x^{2}+y^{2}$"), std::string::npos);
+}
+
+TEST(ReportRender, HtmlPutsAFigureAndTheHeadlineAfterItSideBySide) {
+  Document d;
+  Section s{"summary", "Summary", {}, {}};
+  Drawing dr;
+  dr.segments.push_back(Segment{{0, 0}, {1, 1}, "#222222", Stroke::Solid, false, ""});
+  s.blocks.push_back(figure_block({"fig-a", "A figure.", dr}));
+  s.blocks.push_back(headline_block({plain("17 of 17 true claims hold"), plain("all 30 claims as expected")}));
+  d.sections.push_back(s);
+  const std::string html = render_html(d, std::nullopt);
+  const size_t hero = html.find("<div class=\"lp-hero\">"), figure = html.find("<figure"),
+               headline = html.find("<ul class=\"lp-headline\">\n<li>17 of 17 true claims hold</li>");
+  ASSERT_NE(hero, std::string::npos);
+  EXPECT_LT(hero, figure);
+  EXPECT_LT(figure, headline);
+  EXPECT_NE(html.find("@media print"), std::string::npos);
+  std::map<std::string, std::string> files;
+  EXPECT_NE(render_markdown(d, files).find("- 17 of 17 true claims hold\n"), std::string::npos);
+  EXPECT_NE(render_latex(d).find("\\item 17 of 17 true claims hold"), std::string::npos);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // written, their sections in order, exact values from the check, and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -38,9 +39,11 @@ TEST(ReportCli, PentagonHtmlHasTheSectionsInOrderWithExactValues) {
   const std::string html = slurp(dir.path / "pentagon.html");
   expect_sections_in_order(html, {"summary", "derivation", "construction", "terms", "errata", "reproduce"});
   EXPECT_EQ(html.find("<section id=\"numerics\">"), std::string::npos);  // not asked
-  EXPECT_NE(html.find("7331/2662"), std::string::npos);                  // omega-dot_{3,5} (conventions §A8)
-  EXPECT_NE(html.find("3755/1331"), std::string::npos) << "omega-dot_{4,5}";
-  EXPECT_NE(html.find("(\\frac{26}{5},\\ \\frac{23}{5})"), std::string::npos) << "Q_1";
+  EXPECT_NE(html.find("\\frac{7331}{2662}"), std::string::npos);         // omega-dot_{3,5} (conventions §A8)
+  EXPECT_NE(html.find("\\frac{3755}{1331}"), std::string::npos) << "omega-dot_{4,5}";
+  EXPECT_NE(html.find("\\frac{26}{5} = 5.2</span>, <span class=\"lp-math\" data-tex=\"\\frac{23}{5} = 4.6"),
+            std::string::npos)
+      << "Q_1";
   EXPECT_NE(html.find("-\\frac{705}{2662}"), std::string::npos) << "lambda_1";
   EXPECT_NE(html.find("\\cot\\varphi = -\\frac{2}{11}"), std::string::npos);
   EXPECT_NE(html.find("<svg"), std::string::npos);
@@ -82,6 +85,57 @@ TEST(ReportCli, PentagonMarkdownAndLatexAreWrittenWithFigures) {
   EXPECT_NE(tex.find("\\begin{picture}"), std::string::npos);
 }
 
+// Issue 27: every exact value with its decimal, the summary opening with the drawing beside the
+// headline, long formulas folded.
+TEST(ReportCli, PentagonShowsEachExactValueWithItsDecimal) {
+  TempDir dir("pentagon_decimals");
+  const CliRun r =
+      run_cli({"report", source("verify/scenes/pentagon.yaml"), "--format", "all", "--out", dir.path.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* file : {"pentagon.html", "pentagon.md", "pentagon.tex"}) {
+    const std::string text = slurp(dir.path / file);
+    EXPECT_NE(text.find("\\frac{3755}{1331} \\approx 2.821187077"), std::string::npos) << file << ": omega-dot_{4,5}";
+    EXPECT_NE(text.find("\\frac{7331}{2662} \\approx 2.753944403"), std::string::npos) << file << ": omega-dot_{3,5}";
+    EXPECT_NE(text.find("-\\frac{705}{2662} \\approx -0.2648384673"), std::string::npos) << file << ": lambda_1";
+  }
+}
+
+TEST(ReportCli, SummaryOpensWithTheDrawingBesideTheClaimsAtAGlance) {
+  TempDir dir("pentagon_hero");
+  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
+  const std::string html = slurp(dir.path / "pentagon.html");
+  const size_t summary = html.find("<section id=\"summary\">"), hero = html.find("<div class=\"lp-hero\">", summary),
+               figure = html.find("id=\"fig-pentagon-construction\"", summary), table = html.find("<table", summary);
+  ASSERT_NE(hero, std::string::npos);
+  EXPECT_LT(hero, figure);
+  EXPECT_LT(figure, table);
+  EXPECT_NE(html.find("<li>17 of 17 true claims hold</li>"), std::string::npos);
+  EXPECT_NE(html.find("<li>12 of 13 erratum readings fail, as expected (1 coincides with the truth on this scene)</li>"),
+            std::string::npos);
+  // The long derived formulas are folded: no displayed equation wider than the page.
+  EXPECT_NE(html.find("class=\"lp-fold lp-fold-display\""), std::string::npos);
+}
+
+TEST(ReportCli, SliderCrankFromDimensionsShowsLongFractionsByTheirDecimals) {
+  TempDir dir("slider_crank");
+  const CliRun r = run_cli({"report", source("verify/scenes/mechanisms/dimensions_slider_crank.yaml"), "--format", "all",
+                            "--out", dir.path.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // Before: fractions of hundreds of digits in the tables (a page thousands of pixels wide).
+  for (const char* file : {"dimensions_slider_crank.md", "dimensions_slider_crank.tex"}) {
+    const std::string text = slurp(dir.path / file);
+    size_t run = 0, longest = 0;
+    for (const char c : text) longest = std::max(longest, run = (c >= '0' && c <= '9') ? run + 1 : 0);
+    EXPECT_LT(longest, 70u) << file << ": a number of " << longest << " digits";
+    // (LaTeX writes the ≈ as $\\approx$)
+    EXPECT_NE(text.find(" -209.4395102 (exact: 118 digits)"), std::string::npos) << file << ": omega of the crank";
+  }
+  const std::string html = slurp(dir.path / "dimensions_slider_crank.html");
+  EXPECT_NE(html.find("<summary>≈ -209.4395102 (exact: 118 digits)</summary>"), std::string::npos);
+  EXPECT_NE(html.find("id=\"fig-slider-crank-from-dimensions-velocities\""), std::string::npos);
+  EXPECT_NE(html.find("id=\"fig-slider-crank-from-dimensions-accelerations\""), std::string::npos);
+}
+
 TEST(ReportCli, NumericsSectionOnlyWhenAsked) {
   TempDir dir("numerics");
   const CliRun r = run_cli({"report", source("verify/scenes/pentagon.yaml"), "--numerics", "--format", "md", "--out",
@@ -100,7 +154,7 @@ TEST(ReportCli, EightBarReportDrawsTheLinkageAndListsExactRates) {
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string html = slurp(dir.path / "fig5_eightbar.html");
   expect_sections_in_order(html, {"summary", "mechanism", "reproduce"});
-  EXPECT_NE(html.find("-279/317"), std::string::npos);  // omega of link 6 (conventions §A8)
+  EXPECT_NE(html.find("-\\frac{279}{317} \\approx -0.880126183"), std::string::npos);  // omega of link 6 (conventions §A8)
   EXPECT_NE(html.find("<polygon"), std::string::npos);  // a plate (link with three joints)
   EXPECT_EQ(html.find("<section id=\"plans\">"), std::string::npos);
 }
@@ -113,8 +167,10 @@ TEST(ReportCli, Seed001FourBarPlansDrawTheTextbookAccelerationPolygon) {
   const std::string html = slurp(dir.path / "seed001_fourbar.html");
   expect_sections_in_order(html, {"summary", "mechanism", "plans", "tables", "reproduce"});
   EXPECT_NE(html.find("id=\"fig-fourbar-seed001-acceleration-polygon\""), std::string::npos);
-  EXPECT_NE(html.find("3109/800"), std::string::npos);            // alpha4 (conventions §B)
-  EXPECT_NE(html.find("(10923/1222, 17083/1222)"), std::string::npos);  // curvature centre of P
+  EXPECT_NE(html.find("\\frac{3109}{800} = 3.88625"), std::string::npos);  // alpha4 (conventions §B)
+  // the curvature centre of P, (10923/1222, 17083/1222)
+  EXPECT_NE(html.find("\\frac{10923}{1222} \\approx 8.938625205"), std::string::npos);
+  EXPECT_NE(html.find("\\frac{17083}{1222} \\approx 13.97954173"), std::string::npos);
 }
 
 TEST(ReportCli, Seed003MechanismReportIsWritten) {

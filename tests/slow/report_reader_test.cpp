@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "report/report_checks.h"
+#include "slow/browser.h"
 #include "support/cli_run.h"
 #include "support/temp_dir.h"
 
@@ -20,36 +21,14 @@ namespace linkproof {
 namespace {
 
 namespace fs = std::filesystem;
+using test::capture;
+using test::chromium;
+using test::on_path;
 using test::run_cli;
 using test::slurp;
 using test::TempDir;
 
 std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
-
-bool on_path(const std::string& tool) {
-  return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
-}
-
-// Runs a shell command; its standard output, and the exit status in `status`.
-std::string capture(const std::string& command, int& status) {
-  std::string out;
-  FILE* p = popen(command.c_str(), "r");
-  if (!p) {
-    status = -1;
-    return out;
-  }
-  char buf[65536];
-  size_t got;
-  while ((got = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, got);
-  status = pclose(p);
-  return out;
-}
-
-// Headless Chromium as root needs --no-sandbox; no network is used (the page is self-contained).
-std::string chromium(const std::string& args) {
-  return "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run "
-         "--virtual-time-budget=10000 " + args + " 2>/dev/null";
-}
 
 size_t count(const std::string& s, const std::string& what) {
   size_t n = 0;
