@@ -77,17 +77,39 @@ std::string bounded_text(const ResultNumber& x, const std::optional<ResultRadius
   return bound ? number_text(x) + " +- " + radius_short_text(*bound) : readable_number(x, digits);
 }
 
-// A rate along the unit axis for a person: "-3/10 = -0.3", "3/2*sqrt(5) ≈ 3.354101966", or
+// c * sqrt(m) for a person: "3/2*sqrt(5) ≈ 3.354101966" (the decimal to `digits` significant
+// digits, trailing zeros dropped, from c times a rational within 2^-(4 digits + 64) relative of
+// sqrt(m)); a form longer than kLongFraction characters by its decimal and size; a rational
+// (m = 1) as readable_number shows it.
+std::string root_readable(const Rational& c, const cln::cl_I& m, int digits) {
+  if (m == 1 || cln::zerop(c)) return readable_number(ResultNumber(c), digits);
+  std::string decimal = format_decimal(c * enclose_square_root(Rational(m), 4 * digits + 64).midpoint, digits);
+  const size_t e = decimal.find('e');
+  std::string mantissa = decimal.substr(0, e), exponent = e == std::string::npos ? "" : decimal.substr(e);
+  if (mantissa.find('.') != std::string::npos) {
+    while (mantissa.back() == '0') mantissa.pop_back();
+    if (mantissa.back() == '.') mantissa.pop_back();
+  }
+  decimal = mantissa + exponent;
+  const std::string exact = square_root_text(c, m);
+  if (exact.size() <= kLongFraction) return exact + " ≈ " + decimal;
+  size_t figures = 0;
+  for (const char ch : exact) figures += ch >= '0' && ch <= '9';
+  return fmt::format("≈ {} (exact: p/q*sqrt(m) of {} digits, see --json)", decimal, figures);
+}
+
+// A given number (an axis coordinate, |u|) as written, or by its decimal when it is long.
+std::string coordinate_text(const Rational& x, int digits) {
+  const std::string exact = format_rational(x);
+  return exact.size() <= kLongFraction ? exact : readable_number(ResultNumber(x), digits);
+}
+
+// A rate along the unit axis for a person: exact (a rational, or a multiple of a root), or
 // "0.3 +- 1.1e-16" in a floating arithmetic.
 std::string unit_rate_readable(const ResultNumber& x, const cln::cl_I& radicand, const std::optional<ResultRadius>& bound,
                                int digits) {
   if (radicand == 1 || !is_exact(x)) return bounded_text(x, bound, digits);
-  const Rational& c = std::get<Rational>(x);
-  if (cln::zerop(c)) return "0";
-  // The decimal of an irrational value: c times a rational within 2^-(4 digits + 64) relative
-  // of sqrt(m), rounded to `digits` (labelled approximate; the exact form is beside it).
-  const Rational approx = c * enclose_square_root(Rational(radicand), 4 * digits + 64).midpoint;
-  return square_root_text(c, radicand) + " ≈ " + format_decimal(approx, digits);
+  return root_readable(std::get<Rational>(x), radicand, digits);
 }
 
 // The prismatic pairs as textbooks state them: the sliding rates along the unit axis, with the
@@ -102,7 +124,9 @@ void write_sliding_section(std::ostream& out, const MechanismCheck& c, int digit
     if (!p.sliding) continue;
     const MechanismCheck::Sliding& s = *p.sliding;
     fmt::print(out, "{:<10} guide {}, slider {}, u = ({}, {}), |u| = {}\n", p.name, s.guide, s.slider,
-               format_rational(s.axis.x), format_rational(s.axis.y), square_root_text(s.axis_length, s.axis_radicand));
+               coordinate_text(s.axis.x, digits), coordinate_text(s.axis.y, digits),
+               s.axis_radicand == 1 ? coordinate_text(s.axis_length, digits)
+                                    : root_readable(s.axis_length, s.axis_radicand, digits));
     fmt::print(out, "{:<10} sliding v {}\n", "", unit_rate_readable(s.v_unit, s.rate_radicand, s.v_unit_bound, digits));
     fmt::print(out, "{:<10} sliding a {}\n", "", unit_rate_readable(s.a_unit, s.rate_radicand, s.a_unit_bound, digits));
     fmt::print(out, "{:<10} Coriolis  ({}, {})\n", "", bounded_text(s.coriolis[0], s.coriolis_bound[0], digits),
