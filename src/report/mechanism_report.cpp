@@ -123,10 +123,11 @@ void write_sliding_section(std::ostream& out, const MechanismCheck& c, int digit
   for (const auto& p : c.joints) {
     if (!p.sliding) continue;
     const MechanismCheck::Sliding& s = *p.sliding;
-    fmt::print(out, "{:<10} guide {}, slider {}, u = ({}, {}), |u| = {}\n", p.name, s.guide, s.slider,
+    const std::string length = s.axis_radicand == 1 ? coordinate_text(s.axis_length, digits)
+                                                     : root_readable(s.axis_length, s.axis_radicand, digits);
+    fmt::print(out, "{:<10} guide {}, slider {}, u = ({}, {}), |u| {}{}\n", p.name, s.guide, s.slider,
                coordinate_text(s.axis.x, digits), coordinate_text(s.axis.y, digits),
-               s.axis_radicand == 1 ? coordinate_text(s.axis_length, digits)
-                                    : root_readable(s.axis_length, s.axis_radicand, digits));
+               length.rfind("≈", 0) == 0 ? "" : "= ", length);
     fmt::print(out, "{:<10} sliding v {}\n", "", unit_rate_readable(s.v_unit, s.rate_radicand, s.v_unit_bound, digits));
     fmt::print(out, "{:<10} sliding a {}\n", "", unit_rate_readable(s.a_unit, s.rate_radicand, s.a_unit_bound, digits));
     fmt::print(out, "{:<10} Coriolis  ({}, {})\n", "", bounded_text(s.coriolis[0], s.coriolis_bound[0], digits),

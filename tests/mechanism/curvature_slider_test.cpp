@@ -61,8 +61,11 @@ TEST(CurvatureOnSliders, EulerSavaryAcrossAPrismaticPairNamesThePoleAtInfinity) 
   EXPECT_EQ(u.undefined_quantity, "P_block/rocker");
   EXPECT_NE(u.reason.find("the pole of block/rocker is at infinity in the direction"), std::string::npos) << u.reason;
   EXPECT_NE(u.reason.find("(the prismatic joint S between them)"), std::string::npos) << u.reason;
-  for (const auto& x : rays.instances)
-    if (x.label.rfind("block/frame", 0) == 0) EXPECT_EQ(x.verdict, Verdict::Holds) << x.label;
+  for (const auto& x : rays.instances) {
+    if (x.label.rfind("block/frame", 0) == 0) {
+      EXPECT_EQ(x.verdict, Verdict::Holds) << x.label;
+    }
+  }
   EXPECT_EQ(claim(c, "curvature.euler_savary.bar_lines").verdict, Verdict::Holds);
   EXPECT_EQ(claim(c, "curvature.aronhold_kennedy").verdict, Verdict::Holds);
 }
