@@ -337,6 +337,9 @@ class MechanismReader {
     if (js.size() > 2000) fail("mechanism.joints", fmt::format("expected at most 2000 joints, got {}", js.size()));
     std::vector<LinkageJoint> out;
     std::vector<placement::JointSpec> specs;
+    // Slots (joint index, pin link) and axes given as {from: J} (joint index, J), resolved below.
+    std::vector<std::pair<size_t, int>> slots;
+    std::vector<std::pair<size_t, std::string>> axis_from;
     for (size_t i = 0; i < js.size(); ++i) {
       const std::string f = fmt::format("mechanism.joints[{}]", i);
       const YAML::Node j = js[i];
@@ -346,10 +349,11 @@ class MechanismReader {
       joint.name = name_of(j["name"], f + ".name", "the joint's name");
       for (const auto& o : out)
         if (o.name == joint.name) fail(f + ".name", "joint name " + backticked(joint.name) + " is used twice");
-      const std::string type = name_of(j["type"], f + ".type", "the joint type (revolute or prismatic)");
+      const std::string type = name_of(j["type"], f + ".type", "the joint type (revolute, prismatic or slot)");
+      const bool is_slot = type == "slot";
       if (type == "revolute") joint.type = JointType::Revolute;
-      else if (type == "prismatic") joint.type = JointType::Prismatic;
-      else fail(f + ".type", "expected `revolute` or `prismatic`, got " + backticked(type));
+      else if (type == "prismatic" || is_slot) joint.type = JointType::Prismatic;
+      else fail(f + ".type", "expected `revolute` or `prismatic` (or `slot`: a pin in a straight slot), got " + backticked(type));
       const YAML::Node ls = j["links"];
       if (!ls || !ls.IsSequence() || ls.size() != 2)
         fail(f + ".links", "a joint connects exactly two links: expected a list of 2 link names, got " +
@@ -358,9 +362,15 @@ class MechanismReader {
       if (joint.links[0] == joint.links[1])
         fail(f + ".links", "joint " + backticked(joint.name) + " names the same link twice: a joint needs two different links");
       specs.push_back(read_placement(j, f, joint.name));
+      if (is_slot) slots.push_back({i, joint.links[1]});
       if (joint.type == JointType::Prismatic) {
-        joint.axis = read_axis(j["axis"], f + ".axis", joint.name, placement);
-        if (is_zero_vector(joint.axis)) fail(f + ".axis", "zero axis: the guide direction of a prismatic pair must be non-zero");
+        const char* what = is_slot ? "the slot's direction" : "the guide direction of a prismatic pair";
+        if (j["axis"] && j["axis"].IsMap()) {
+          axis_from.push_back({i, read_axis_from(j["axis"], f + ".axis")});
+        } else {
+          joint.axis = read_axis(j["axis"], f + ".axis", joint.name, placement);
+          if (is_zero_vector(joint.axis)) fail(f + ".axis", std::string("zero axis: ") + what + " must be non-zero");
+        }
       } else if (j["axis"]) {
         fail(f + ".axis", "only a prismatic joint has an axis");
       }
@@ -377,7 +387,49 @@ class MechanismReader {
       out[i].at = p.at;
       placement.joints.push_back({out[i].name, kind_names.at(specs[i].kind), p.exact, p.bound});
     }
+    // An axis {from: J}: the direction from joint J to this joint (a radial slot).
+    for (const auto& [i, from] : axis_from) {
+      const std::string f = fmt::format("mechanism.joints[{}].axis", i);
+      const auto it = std::find_if(out.begin(), out.end(), [&](const LinkageJoint& o) { return o.name == from; });
+      if (it == out.end()) fail(f + ".from", "unknown joint " + backticked(from));
+      out[i].axis = out[i].at - it->at;
+      if (is_zero_vector(out[i].axis))
+        fail(f, fmt::format("zero axis: joint {} is at the joint {} itself ({}, {}), so it gives no direction",
+                            backticked(from), backticked(out[i].name), format_rational(it->at.x), format_rational(it->at.y)));
+    }
+    add_slot_blocks(out, slots, placement);
     return out;
+  }
+
+  // `axis: {from: J}`: the name J.
+  std::string read_axis_from(const YAML::Node& n, const std::string& field) const {
+    check_keys(n, field + ".", {"from"});
+    return joint_reference(n["from"], field + ".from");
+  }
+
+  // A slot P (links [guide, pin link]) is a prismatic pair between the guide and a block link
+  // `P.block` plus a revolute pair `P.pin` between the block and the pin link, both at P's point
+  // (docs/mechanisms.md, "Slots"). The block turns with the guide; P keeps the sliding rates.
+  void add_slot_blocks(std::vector<LinkageJoint>& out, const std::vector<std::pair<size_t, int>>& slots,
+                       ScenePlacement& placement) {
+    for (const auto& [i, pin_link] : slots) {
+      const std::string f = fmt::format("mechanism.joints[{}]", i);
+      const std::string block = out[i].name + ".block", pin = out[i].name + ".pin";
+      if (std::find(links_.begin(), links_.end(), block) != links_.end())
+        fail(f + ".name", "slot " + backticked(out[i].name) + " needs the link name " + backticked(block) +
+                              " for its block, but a link has that name");
+      if (std::any_of(out.begin(), out.end(), [&](const LinkageJoint& o) { return o.name == pin; }))
+        fail(f + ".name", "slot " + backticked(out[i].name) + " needs the joint name " + backticked(pin) +
+                              " for its pin, but a joint has that name");
+      links_.push_back(block);
+      const int b = static_cast<int>(links_.size()) - 1;
+      out[i].links[1] = b;
+      LinkageJoint r;
+      r.name = pin, r.type = JointType::Revolute, r.links[0] = b, r.links[1] = pin_link, r.at = out[i].at;
+      out.push_back(std::move(r));
+      const GivenValue given = placement.joints[i];
+      placement.joints.push_back({pin, "at joint", given.exact, given.bound});
+    }
   }
 
   // An input's rate: a number, or an expression with pi and a unit, rationalised when it is not a

@@ -3,6 +3,7 @@
 #include "mechanism/mechanism_catalogue.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace linkproof {
 
@@ -16,8 +17,11 @@ struct BobillierPairs {
   std::string from;
 };
 
+// The pairs, or (nullopt) with `why` saying what was found and what could not be used: a joint
+// that is the requested point, a centre at infinity or undefined, a prismatic pair (its pole
+// is at infinity: no finite point and centre).
 std::optional<BobillierPairs> bobillier_pairs(const Linkage& g, const std::vector<LinkField<Rational>>& fields,
-                                              const CurvatureRequest& r) {
+                                              const CurvatureRequest& r, std::string& why) {
   std::vector<std::pair<Vec2<Rational>, Vec2<Rational>>> pairs;
   std::vector<std::string> names;
   for (int b = 0; b < g.link_count() && pairs.size() < 2; ++b) {
@@ -31,20 +35,42 @@ std::optional<BobillierPairs> bobillier_pairs(const Linkage& g, const std::vecto
     return BobillierPairs{pairs[0].first, pairs[0].second, pairs[1].first, pairs[1].second,
                           fmt::format("bars {} and {} joining links {} and {}", names[0], names[1],
                                       g.link_name(r.moving), g.link_name(r.fixed))};
+  const std::string motion = g.link_name(r.moving) + "/" + g.link_name(r.fixed);
+  std::vector<std::string> bars = names, unusable;
   pairs.clear();
   names.clear();
   const auto& fm = fields[static_cast<size_t>(r.moving)];
   const auto& ff = fields[static_cast<size_t>(r.fixed)];
   for (const LinkageJoint& j : g.joints()) {
     if (pairs.size() == 2) break;
-    if (j.type != JointType::Revolute || (j.links[0] != r.moving && j.links[1] != r.moving)) continue;
-    if (is_zero_vector(j.at - r.at)) continue;
+    if (j.links[0] != r.moving && j.links[1] != r.moving) continue;
+    if (j.type == JointType::Prismatic) {
+      unusable.push_back(fmt::format("prismatic joint {} (links {} and {} turn together: their pole is at infinity or "
+                                     "undefined, so it gives no finite point and centre)",
+                                     j.name, g.link_name(j.links[0]), g.link_name(j.links[1])));
+      continue;
+    }
+    if (is_zero_vector(j.at - r.at)) {
+      unusable.push_back(fmt::format("joint {} (it is the requested point)", j.name));
+      continue;
+    }
     const auto c = construct_curvature_centre(j.at, relative_point_motion(fm, ff, j.at), "");
-    if (!c.is_finite()) continue;
+    if (!c.is_finite()) {
+      unusable.push_back(fmt::format("joint {} (its centre in {} is {})", j.name, motion,
+                                     c.kind == PlanePoint<Rational>::Kind::AtInfinity ? "at infinity" : c.reason));
+      continue;
+    }
     pairs.emplace_back(j.at, c.at);
     names.push_back(j.name);
   }
-  if (pairs.size() < 2) return std::nullopt;
+  if (pairs.size() < 2) {
+    why = fmt::format("Bobillier needs two (point, curvature centre) pairs of {} at finite points; bars joining {} and {}: "
+                      "{}; joints of {} with a finite centre: {}{}{}",
+                      motion, g.link_name(r.moving), g.link_name(r.fixed), bars.empty() ? "none" : fmt::format("{}", fmt::join(bars, ", ")),
+                      g.link_name(r.moving), names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", ")),
+                      unusable.empty() ? "" : "; not usable: ", fmt::format("{}", fmt::join(unusable, "; ")));
+    return std::nullopt;
+  }
   return BobillierPairs{pairs[0].first, pairs[0].second, pairs[1].first, pairs[1].second,
                         fmt::format("analytic centres of joints {} and {} (no two bars join links {} and {})",
                                     names[0], names[1], g.link_name(r.moving), g.link_name(r.fixed))};
@@ -103,12 +129,13 @@ CurvatureAnalysis analyse_curvature(const MechanismScene& s, const MechanismSolu
     c.centre = construct_curvature_centre(
         r.at, c.motion, fmt::format("centre of {} in {}/{}", r.point, g.link_name(r.moving), g.link_name(r.fixed)));
     c.circle = construct_inflection_circle(fm, ff, fmt::format("P_{},{}", g.link_name(r.moving), g.link_name(r.fixed)));
-    if (const auto p = bobillier_pairs(g, fields, r)) {
+    std::string why;
+    if (const auto p = bobillier_pairs(g, fields, r, why)) {
       c.bobillier = construct_bobillier(p->A, p->alpha, p->B, p->beta, r.at, false);
       c.bobillier_mirrored = construct_bobillier(p->A, p->alpha, p->B, p->beta, r.at, true);
       c.bobillier_pairs = p->from;
     } else {
-      c.bobillier_pairs = "no two points of the moving link with a finite curvature centre";
+      c.bobillier_pairs = why;
     }
     a.centres.push_back(std::move(c));
   }

@@ -56,6 +56,20 @@ void for_each_bar(const MechanismContext& c, F f) {
 
 std::string motion_name(const Linkage& g, int m, int f) { return g.link_name(m) + "/" + g.link_name(f); }
 
+// Why the pole of m/f is not a finite point: at infinity (a relative translation, e.g. across a
+// prismatic pair, which it names), or undefined (no relative motion).
+std::string pole_not_finite(const Linkage& g, const PP& pole, int m, int f) {
+  std::string pair;
+  for (const LinkageJoint& j : g.joints())
+    if (j.type == JointType::Prismatic && ((j.links[0] == m && j.links[1] == f) || (j.links[0] == f && j.links[1] == m)))
+      pair = fmt::format(" (the prismatic joint {} between them)", j.name);
+  if (pole.kind == PP::Kind::AtInfinity)
+    return fmt::format("the pole of {} is at infinity in the direction ({}, {}): the motion is an instantaneous "
+                       "translation{}, omega = 0, and Euler-Savary needs a finite pole",
+                       motion_name(g, m, f), format_rational(pole.at.x), format_rational(pole.at.y), pair);
+  return fmt::format("the pole of {} is undefined: {}{}", motion_name(g, m, f), pole.reason, pair);
+}
+
 MechanismClaim make(std::string id, std::string source, std::string statement, Expectation e,
                     std::function<ClaimSides<Rational>(const MechanismContext&)> f,
                     std::function<bool(const MechanismContext&)> applies = {}) {
@@ -155,7 +169,7 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
           const int m = e.request.moving, f = e.request.fixed;
           const std::string name = motion_name(g, m, f);
           if (!e.circle.pole.is_finite()) {
-            s.instances.push_back(Cmp{name, Defined<Rational>::undefined("P_" + name, "the pole is not a finite point"),
+            s.instances.push_back(Cmp{name, Defined<Rational>::undefined("P_" + name, pole_not_finite(g, e.circle.pole, m, f)),
                                       Rational(0)});
             continue;
           }
@@ -193,7 +207,7 @@ void add_bobillier_claims(std::vector<MechanismClaim>& out, const std::shared_pt
             const auto& b = mirrored ? e.bobillier_mirrored : e.bobillier;
             const std::string label =
                 fmt::format("{} in {}", e.request.point, motion_name(g, e.request.moving, e.request.fixed));
-            const PP gamma = b ? b->gamma : PP::undefined("gamma", e.bobillier_pairs);
+            const PP gamma = b ? b->gamma : PP::undefined("Bobillier's gamma of " + label, e.bobillier_pairs);
             compare_points(s, label, gamma, "gamma", e.centre, "analytic centre");
           }
           return s;

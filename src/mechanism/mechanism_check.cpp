@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "core/tracked.h"
+#include "mechanism/axis_length.h"
 #include "mechanism/mechanism_vector_route.h"
 #include "mechanism/mechanism_closure.h"
 #include "mechanism/sub_mechanism.h"
@@ -83,6 +84,36 @@ bool all_finite(const MechanismMotion<F>& m) {
          finite_vectors(m.joint_a);
 }
 
+// A prismatic joint's rates along the unit axis and its Coriolis term (MechanismCheck::Sliding).
+template <class T>
+MechanismCheck::Sliding sliding_motion(const Linkage& g, int joint, const MechanismMotion<T>& m) {
+  const LinkageJoint& j = g.joint(joint);
+  const T& sd = m.slide[static_cast<size_t>(joint)];
+  const T& sdd = m.slide_dot[static_cast<size_t>(joint)];
+  MechanismCheck::Sliding out;
+  out.guide = g.link_name(j.links[0]), out.slider = g.link_name(j.links[1]);
+  out.axis = j.axis;
+  const SquareRootForm length = construct_square_root(norm2(j.axis));
+  out.axis_length = length.coefficient, out.axis_radicand = length.radicand;
+  // sigma-dot |u|: exact as the coefficient of sqrt(radicand); in floating point |u| enclosed.
+  T unit_length;
+  if constexpr (ScalarTraits<T>::is_exact) {
+    unit_length = length.coefficient;
+    out.rate_radicand = length.radicand;
+  } else {
+    unit_length = square_root_value<T>(norm2(j.axis));
+  }
+  const T v = sd * unit_length, a = sdd * unit_length;
+  out.v_unit = result_number(v), out.a_unit = result_number(a);
+  out.v_unit_bound = bound_of(v), out.a_unit_bound = bound_of(a);
+  // 2 omega_guide J v_rel with v_rel = sigma-dot u (linkage_motion.h).
+  const Vec2<T> coriolis =
+      (from_int<T>(2) * m.omega[static_cast<size_t>(j.links[0])] * sd) * perp(vec_from_rational<T>(j.axis));
+  out.coriolis[0] = result_number(coriolis.x), out.coriolis[1] = result_number(coriolis.y);
+  out.coriolis_bound[0] = bound_of(coriolis.x), out.coriolis_bound[1] = bound_of(coriolis.y);
+  return out;
+}
+
 template <class T>
 void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMotion<T>& m) {
   const Linkage& g = s.linkage;
@@ -112,6 +143,7 @@ void fill_motion(MechanismCheck& r, const MechanismScene& s, const MechanismMoti
       const T& sdd = m.slide_dot[static_cast<size_t>(j)];
       p.slide = result_number(sd), p.slide_dot = result_number(sdd);
       p.slide_bound = bound_of(sd), p.slide_dot_bound = bound_of(sdd);
+      p.sliding = sliding_motion(g, j, m);
     }
     r.joints.push_back(std::move(p));
   }

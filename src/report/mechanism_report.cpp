@@ -1,11 +1,13 @@
 #include "report/mechanism_report.h"
 
+#include <cln/integer.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <fmt/ostream.h>
 
 #include <algorithm>
 
+#include "mechanism/axis_length.h"
 #include "report/comparison_text.h"
 #include "report/json_report.h"
 #include "report/number_text.h"
@@ -15,6 +17,36 @@ namespace linkproof {
 using nlohmann::json;
 
 namespace {
+
+// c * sqrt(m) as text: "p/q" when m is 1, "sqrt(m)" or "p/q*sqrt(m)" otherwise (exact).
+std::string square_root_text(const Rational& c, const cln::cl_I& m) {
+  if (m == 1) return format_rational(c);
+  const std::string root = "sqrt(" + format_rational(Rational(m)) + ")";
+  if (c == 1) return root;
+  if (c == -1) return "-" + root;
+  return format_rational(c) + "*" + root;
+}
+
+// A rate along the unit axis: the number itself, or its exact form with the root.
+std::string unit_rate_text(const ResultNumber& x, const cln::cl_I& radicand) {
+  if (radicand == 1 || !is_exact(x)) return number_text(x);
+  return square_root_text(std::get<Rational>(x), radicand);
+}
+
+// The keys a prismatic joint adds (additive: sliding_v, sliding_a keep their meaning, per unit
+// of the axis as written).
+void add_sliding_json(json& j, const MechanismCheck::Sliding& s) {
+  j["guide"] = s.guide, j["slider"] = s.slider;
+  j["axis"] = {format_rational(s.axis.x), format_rational(s.axis.y)};
+  j["axis_length"] = square_root_text(s.axis_length, s.axis_radicand);
+  j["sliding_v_unit"] = unit_rate_text(s.v_unit, s.rate_radicand);
+  j["sliding_a_unit"] = unit_rate_text(s.a_unit, s.rate_radicand);
+  j["coriolis"] = {number_text(s.coriolis[0]), number_text(s.coriolis[1])};
+  if (s.v_unit_bound && s.a_unit_bound)
+    j["sliding_v_unit_bound"] = radius_text(*s.v_unit_bound), j["sliding_a_unit_bound"] = radius_text(*s.a_unit_bound);
+  if (s.coriolis_bound[0] && s.coriolis_bound[1])
+    j["coriolis_bound"] = {radius_text(*s.coriolis_bound[0]), radius_text(*s.coriolis_bound[1])};
+}
 
 json point_json(const MechanismCheck::PointMotion& p) {
   json j{{"v", {number_text(p.v[0]), number_text(p.v[1])}}, {"a", {number_text(p.a[0]), number_text(p.a[1])}}};
@@ -26,6 +58,7 @@ json point_json(const MechanismCheck::PointMotion& p) {
   }
   if (p.slide_bound && p.slide_dot_bound)
     j["sliding_v_bound"] = radius_text(*p.slide_bound), j["sliding_a_bound"] = radius_text(*p.slide_dot_bound);
+  if (p.sliding) add_sliding_json(j, *p.sliding);
   return j;
 }
 
@@ -42,6 +75,64 @@ json rates_json(const ResultNumber& omega, const ResultNumber& omega_dot, const 
 // exact value with its decimal beside it: "-3/4 = -0.75" (report/number_text.h).
 std::string bounded_text(const ResultNumber& x, const std::optional<ResultRadius>& bound, int digits) {
   return bound ? number_text(x) + " +- " + radius_short_text(*bound) : readable_number(x, digits);
+}
+
+// c * sqrt(m) for a person: "3/2*sqrt(5) ≈ 3.354101966" (the decimal to `digits` significant
+// digits, trailing zeros dropped, from c times a rational within 2^-(4 digits + 64) relative of
+// sqrt(m)); a form longer than kLongFraction characters by its decimal and size; a rational
+// (m = 1) as readable_number shows it.
+std::string root_readable(const Rational& c, const cln::cl_I& m, int digits) {
+  if (m == 1 || cln::zerop(c)) return readable_number(ResultNumber(c), digits);
+  std::string decimal = format_decimal(c * enclose_square_root(Rational(m), 4 * digits + 64).midpoint, digits);
+  const size_t e = decimal.find('e');
+  std::string mantissa = decimal.substr(0, e), exponent = e == std::string::npos ? "" : decimal.substr(e);
+  if (mantissa.find('.') != std::string::npos) {
+    while (mantissa.back() == '0') mantissa.pop_back();
+    if (mantissa.back() == '.') mantissa.pop_back();
+  }
+  decimal = mantissa + exponent;
+  const std::string exact = square_root_text(c, m);
+  if (exact.size() <= kLongFraction) return exact + " ≈ " + decimal;
+  size_t figures = 0;
+  for (const char ch : exact) figures += ch >= '0' && ch <= '9';
+  return fmt::format("≈ {} (exact: p/q*sqrt(m) of {} digits, see --json)", decimal, figures);
+}
+
+// A given number (an axis coordinate, |u|) as written, or by its decimal when it is long.
+std::string coordinate_text(const Rational& x, int digits) {
+  const std::string exact = format_rational(x);
+  return exact.size() <= kLongFraction ? exact : readable_number(ResultNumber(x), digits);
+}
+
+// A rate along the unit axis for a person: exact (a rational, or a multiple of a root), or
+// "0.3 +- 1.1e-16" in a floating arithmetic.
+std::string unit_rate_readable(const ResultNumber& x, const cln::cl_I& radicand, const std::optional<ResultRadius>& bound,
+                               int digits) {
+  if (radicand == 1 || !is_exact(x)) return bounded_text(x, bound, digits);
+  return root_readable(std::get<Rational>(x), radicand, digits);
+}
+
+// The prismatic pairs as textbooks state them: the sliding rates along the unit axis, with the
+// sign convention, and the Coriolis term of each.
+void write_sliding_section(std::ostream& out, const MechanismCheck& c, int digits) {
+  const bool any = std::any_of(c.joints.begin(), c.joints.end(), [](const auto& p) { return p.sliding.has_value(); });
+  if (!any) return;
+  fmt::print(out, "\nprismatic pairs: the slider relative to its guide along the unit axis u/|u| (u as written, fixed in "
+                  "the guide; + = the slider moves along +u), in length/time and length/time^2; Coriolis 2 omega_guide x "
+                  "v_rel = 2 omega_guide J v_rel\n");
+  for (const auto& p : c.joints) {
+    if (!p.sliding) continue;
+    const MechanismCheck::Sliding& s = *p.sliding;
+    const std::string length = s.axis_radicand == 1 ? coordinate_text(s.axis_length, digits)
+                                                     : root_readable(s.axis_length, s.axis_radicand, digits);
+    fmt::print(out, "{:<10} guide {}, slider {}, u = ({}, {}), |u| {}{}\n", p.name, s.guide, s.slider,
+               coordinate_text(s.axis.x, digits), coordinate_text(s.axis.y, digits),
+               length.rfind("≈", 0) == 0 ? "" : "= ", length);
+    fmt::print(out, "{:<10} sliding v {}\n", "", unit_rate_readable(s.v_unit, s.rate_radicand, s.v_unit_bound, digits));
+    fmt::print(out, "{:<10} sliding a {}\n", "", unit_rate_readable(s.a_unit, s.rate_radicand, s.a_unit_bound, digits));
+    fmt::print(out, "{:<10} Coriolis  ({}, {})\n", "", bounded_text(s.coriolis[0], s.coriolis_bound[0], digits),
+               bounded_text(s.coriolis[1], s.coriolis_bound[1], digits));
+  }
 }
 
 }  // namespace
@@ -161,10 +252,8 @@ void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& 
                  fmt::format("({}, {})", bounded_text(p.v[0], p.v_bound[0], digits), bounded_text(p.v[1], p.v_bound[1], digits)),
                  point_width,
                  fmt::format("({}, {})", bounded_text(p.a[0], p.a_bound[0], digits), bounded_text(p.a[1], p.a_bound[1], digits)),
-                 point_width,
-                 p.slide ? fmt::format("   sliding v {}, a {}", bounded_text(*p.slide, p.slide_bound, digits),
-                                       bounded_text(*p.slide_dot, p.slide_dot_bound, digits))
-                         : "");
+                 point_width, p.sliding ? "   (slider's point; its sliding rates below)" : "");
+  write_sliding_section(out, c, digits);
   for (const auto& t : c.tables) {
     fmt::print(out, "\n{}\n", t.title);
     for (const auto& [k, v] : t.rows) fmt::print(out, "  {:<28} {}\n", k, v);

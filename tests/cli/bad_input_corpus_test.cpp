@@ -53,6 +53,15 @@ std::string fourbar(const std::string& a, const std::string& b, const std::strin
          "  inputs:\n    - {link: \"2\", omega: 2, omega_dot: 5}\n";
 }
 
+// A six-slot Geneva drive whose slot P has the axis `axis` and the links `links`.
+std::string geneva_slot(const std::string& axis, const std::string& links) {
+  return "name: geneva\nmechanism:\n  ground: frame\n  joints:\n"
+         "    - {name: O2, type: revolute, links: [frame, crank], at: [0, 0]}\n"
+         "    - {name: O4, type: revolute, links: [wheel, frame], at: [100, 0]}\n"
+         "    - {name: P, type: slot, links: " + links + ", at: [40, 30], axis: " + axis + "}\n"
+         "  inputs:\n    - {link: crank, omega: 2, omega_dot: 0}\n";
+}
+
 // A small sweep's result file (3 cases of n = 5) with line 2 changed by `edit`, and the command
 // line that resumes it.
 std::vector<std::string> resume_of_edited_sweep(const std::string& name,
@@ -551,6 +560,29 @@ const std::vector<Case>& corpus() {
       {"DimensionsUnknownJointIsNamed",
        [] { return std::vector<std::string>{"check", write_temp("dims_unknown.yaml", fourbar("[3, 4]", "O5", "[11, 0]"))}; },
        2, "mechanism.joints[2].at: unknown joint `O5`: joint `B` is placed from it", "", ""},
+      // --- slot joints (issue 27): a pin in a straight slot, refused naming file, field and problem
+      {"SlotWithAZeroAxisNamesFileFieldAndProblem",
+       [] { return std::vector<std::string>{"check", write_temp("slot_zero.yaml", geneva_slot("[0, 0]", "[wheel, crank]"))}; },
+       2, "bad_input_slot_zero.yaml: mechanism.joints[2].axis: zero axis: the slot's direction must be non-zero", "", ""},
+      {"SlotOnOneLinkNamesFileFieldAndProblem",
+       [] { return std::vector<std::string>{"check", write_temp("slot_one_link.yaml", geneva_slot("{from: O4}", "[wheel, wheel]"))}; },
+       2, "bad_input_slot_one_link.yaml: mechanism.joints[2].links: joint `P` names the same link twice", "", ""},
+      {"SlotAxisFromItsOwnPointNamesTheProblem",
+       [] { return std::vector<std::string>{"check", write_temp("slot_self.yaml", geneva_slot("{from: P}", "[wheel, crank]"))}; },
+       2, "bad_input_slot_self.yaml: mechanism.joints[2].axis: zero axis: joint `P` is at the joint `P` itself", "", ""},
+      {"SlotAxisFromAnUnknownJointNamesIt",
+       [] { return std::vector<std::string>{"check", write_temp("slot_unknown.yaml", geneva_slot("{from: Q}", "[wheel, crank]"))}; },
+       2, "bad_input_slot_unknown.yaml: mechanism.joints[2].axis.from: unknown joint `Q`", "", ""},
+      {"SlotAxisWithAnUnknownKeyIsRefused",
+       [] { return std::vector<std::string>{"check", write_temp("slot_key.yaml", geneva_slot("{towards: O4}", "[wheel, crank]"))}; },
+       2, "bad_input_slot_key.yaml: mechanism.joints[2].axis.towards: unknown field", "", ""},
+      {"SlotWithoutAnAxisIsRefused",
+       [] {
+         std::string scene = geneva_slot("[1, 0]", "[wheel, crank]");
+         scene.replace(scene.find(", axis: [1, 0]"), 14, "");
+         return std::vector<std::string>{"check", write_temp("slot_no_axis.yaml", scene)};
+       },
+       2, "bad_input_slot_no_axis.yaml: mechanism.joints[2].axis: missing required field", "", ""},
       {"DimensionsAngleInDegreesSpelledOutIsRefused",
        [] {
          std::string scene = fourbar("[3, 4]", "[11, 10]", "[11, 0]");

@@ -85,6 +85,14 @@ void expect_bounds_enclose_exact(const std::string& scene_name, Arithmetic a) {
       if (!xs[j].slide) continue;
       e.expect(*xs[j].slide, *fs[j].slide, fs[j].slide_bound, where + " sliding v of " + xs[j].name);
       e.expect(*xs[j].slide_dot, *fs[j].slide_dot, fs[j].slide_dot_bound, where + " sliding a of " + xs[j].name);
+      // Along the unit axis and the Coriolis term (issue 27): bounded too.
+      ASSERT_TRUE(xs[j].sliding && fs[j].sliding) << where;
+      const auto &xu = *xs[j].sliding, &fu = *fs[j].sliding;
+      for (int c = 0; c < 2; ++c)
+        e.expect(xu.coriolis[c], fu.coriolis[c], fu.coriolis_bound[c], where + " Coriolis of " + xs[j].name);
+      if (xu.rate_radicand != 1) continue;  // an irrational |u|: sliding_rates_test.cpp
+      e.expect(xu.v_unit, fu.v_unit, fu.v_unit_bound, where + " sliding v along the unit axis of " + xs[j].name);
+      e.expect(xu.a_unit, fu.a_unit, fu.a_unit_bound, where + " sliding a along the unit axis of " + xs[j].name);
     }
   }
   EXPECT_GT(e.values, 10) << where;
@@ -94,7 +102,7 @@ void expect_bounds_enclose_exact(const std::string& scene_name, Arithmetic a) {
 
 TEST(MechanismFloatingBounds, EveryValueOfTheFloatingSolveIsBoundedAndTheBoundContainsTheExactValue) {
   for (const char* scene : {"seed001_fourbar.yaml", "fig5_eightbar.yaml", "seed003_class3.yaml",
-                            "dimensions_slider_crank.yaml"})
+                            "dimensions_slider_crank.yaml", "inverted_slider_crank.yaml"})
     for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble, Arithmetic::Mp30})
       expect_bounds_enclose_exact(scene, a);
 }

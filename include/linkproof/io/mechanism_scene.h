@@ -31,6 +31,10 @@
 // - A joint has a unique name, `type` revolute or prismatic, exactly two different links and a
 //   point `at`; a prismatic joint also a non-zero `axis` (links[0] is the guide that carries the
 //   axis, links[1] the slider: mechanism/linkage.h). Every link must be connected to the ground.
+// - `type: slot`, links [slotted link, pin link]: a pin in a straight slot, read as a prismatic
+//   pair P [slotted link, P.block] plus a revolute pair P.pin [P.block, pin link] at the same
+//   point, with the block link P.block added (a link or joint already so named is an error).
+//   An `axis` (prismatic or slot) may be `{from: J}`: the direction from joint J to this joint.
 // - Mechanisms from dimensions: instead of `at: [x, y]` a joint may be placed from joints
 //   placed before it (in any order of the list that allows it; a cycle or an unknown name is an
 //   InputError naming the joint):

@@ -21,6 +21,8 @@
 // solve), beside the system's condition number.
 #pragma once
 
+#include <cln/integer.h>
+
 #include <optional>
 #include <string>
 #include <utility>
@@ -58,11 +60,41 @@ struct MechanismCheck {
   /// (core/tracked.h; unbounded, i.e. infinite, when the solve divided by a pivot whose bound
   /// reaches zero).
   std::vector<std::optional<ResultRadius>> omega_bound, omega_dot_bound;
+  /// A prismatic pair as textbooks state it (docs/mechanisms.md, "Sliders"). Sign convention:
+  /// the motion of the SLIDER relative to the GUIDE, positive when the slider moves along +u
+  /// (u the axis as written, fixed in the guide); swapping the pair's [guide, slider] order
+  /// flips the sign, as it flips which body moves relative to which.
+  struct Sliding {
+    std::string guide, slider;  ///< link names
+    Vec2<Rational> axis;        ///< u as written in the scene (any non-zero length)
+    /// |u| = axis_length * sqrt(axis_radicand), exactly; axis_radicand is 1 when |u| is
+    /// rational (e.g. [3/5, 4/5], [3, 4]), > 1 otherwise ([1, 1]: 1 * sqrt(2)).
+    Rational axis_length;
+    cln::cl_I axis_radicand = 1;
+    /// The sliding velocity and acceleration along the unit axis u/|u| (length/time,
+    /// length/time^2): sigma-dot |u|, sigma-ddot |u|. Their values are v_unit * sqrt(rate_radicand)
+    /// and a_unit * sqrt(rate_radicand). Exact arithmetic: rate_radicand = axis_radicand, so an
+    /// irrational |u| is never rounded (v_unit is then the exact coefficient of the root).
+    /// Floating arithmetic: rate_radicand = 1 and the values carry bounds that cover both the
+    /// solve and the enclosure of |u|.
+    ResultNumber v_unit, a_unit;
+    cln::cl_I rate_radicand = 1;
+    std::optional<ResultRadius> v_unit_bound, a_unit_bound;
+    /// The Coriolis acceleration 2 omega_guide x v_rel = 2 omega_guide J v_rel (v_rel = sigma-dot u,
+    /// the slider's velocity relative to the guide): the part of the slider point's acceleration
+    /// that is neither the guide point's nor the sliding acceleration (docs/conventions.md §C).
+    ResultNumber coriolis[2];
+    std::optional<ResultRadius> coriolis_bound[2];
+  };
   struct PointMotion {
     std::string name;
     ResultNumber v[2], a[2];
-    std::optional<ResultNumber> slide, slide_dot;  ///< prismatic joints only
+    /// Prismatic joints only: sigma-dot, sigma-ddot, the rates per unit of the axis AS WRITTEN
+    /// (the slider's velocity relative to the guide is sigma-dot u); `sliding` restates them
+    /// along the unit axis with the Coriolis term.
+    std::optional<ResultNumber> slide, slide_dot;
     std::optional<ResultRadius> v_bound[2], a_bound[2], slide_bound, slide_dot_bound;
+    std::optional<Sliding> sliding;  ///< prismatic joints only
   };
   std::vector<PointMotion> joints, points;
   /// Every pair of links i < k (in link order): omega_ik = omega_i - omega_k, and omega-dot_ik.
