@@ -63,6 +63,20 @@ ROWS = [
      "note": "`count --n 3..200` <= 30 s in all (143 s by `time`, README)"},
     {"row": "count, triangle rank alone, n = 60", "bench": r"^BM_CountTriangleRank/60$", "goal": None},
     {"row": "mechanism chains", "bench": r"^BM_MechanismChain", "goal": None},
+    {"row": "prove --topology, every claim of fourbar.yaml (7)", "bench": r"^BM_TopologyProofEveryClaim/0$",
+     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+    {"row": "prove --topology, the notes' four-bar acceleration polygon (9)", "bench": r"^BM_TopologyProofEveryClaim/1$",
+     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+    {"row": "prove --topology, slider-crank claims (5)", "bench": r"^BM_TopologyProofEveryClaim/2$",
+     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+    {"row": "prove --topology, inverted slider-crank claims (6)", "bench": r"^BM_TopologyProofEveryClaim/3$",
+     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+    {"row": "prove --topology, Watt six-bar claims (6)", "bench": r"^BM_TopologyProofEveryClaim/4$",
+     "goal": ("max_seconds", 60), "note": "<= 60 s per claim (here: all claims together)"},
+    {"row": "random exact four-bar configurations, a point-acceleration claim, one core",
+     "bench": r"^BM_TopologySamplesExact$", "goal": ("min_per_second", 2000), "note": ">= 2,000/s"},
+    {"row": "random double four-bar configurations, the same claim", "bench": r"^BM_TopologySamplesDouble$",
+     "goal": ("faster_than", r"^BM_TopologySamplesExact$", 10), "note": ">= 10x faster than exact"},
 ]
 
 BEGIN = "<!-- performance-table:begin (bench/performance_table.py writes this part) -->"

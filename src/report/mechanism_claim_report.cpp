@@ -39,6 +39,31 @@ std::string scope(const SampleResult& r, const TopologySampleRun& run) {
 
 }  // namespace
 
+nlohmann::json to_json(const MechanismCounterexample& x) {
+  return {{"configuration", x.configuration},
+          {"shrink_steps", x.shrink_steps},
+          {"shrink_tried", x.shrink_tried},
+          {"scene_yaml", x.scene_yaml},
+          {"check", to_json(x.outcome)}};
+}
+
+void write_text(std::ostream& out, const MechanismCounterexample& x) {
+  for (const ComparisonOutcome& c : x.outcome.instances)
+    fmt::print(out, "    {}: lhs {}  rhs {}  ({})\n", c.label, c.lhs ? readable_number(*c.lhs) : "undefined",
+               c.rhs ? readable_number(*c.rhs) : "undefined", to_string(c.verdict));
+  fmt::print(out, "    counterexample scene (check-claim CLAIMS --scene FILE re-fails on it):\n");
+  std::string line;
+  for (char ch : x.scene_yaml) {
+    if (ch != '\n') {
+      line += ch;
+      continue;
+    }
+    fmt::print(out, "      {}\n", line);
+    line.clear();
+  }
+  if (!line.empty()) fmt::print(out, "      {}\n", line);
+}
+
 nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status) {
   using json = nlohmann::json;
   json claims = json::array();
@@ -60,14 +85,7 @@ nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status)
                                 : json{{"quantity", r.undefined_quantity}, {"reason", r.undefined_reason}}},
               {"counterexample", json(nullptr)},
               {"seconds", r.seconds}};
-    if (r.counterexample) {
-      const MechanismCounterexample& x = *r.counterexample;
-      c["counterexample"] = {{"configuration", x.configuration},
-                             {"shrink_steps", x.shrink_steps},
-                             {"shrink_tried", x.shrink_tried},
-                             {"scene_yaml", x.scene_yaml},
-                             {"check", to_json(x.outcome)}};
-    }
+    if (r.counterexample) c["counterexample"] = to_json(*r.counterexample);
     claims.push_back(std::move(c));
   }
   return {{"mode", "topology"},
@@ -101,20 +119,7 @@ void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsSta
                status.as_expected[k] ? "" : "  <-- NOT AS EXPECTED");
     fmt::print(out, "    {}\n    {}\n", r.info.statement, scope(r, run));
     if (!r.counterexample) continue;
-    const MechanismCounterexample& x = *r.counterexample;
-    for (const ComparisonOutcome& c : x.outcome.instances)
-      fmt::print(out, "    {}: lhs {}  rhs {}  ({})\n", c.label, c.lhs ? readable_number(*c.lhs) : "undefined",
-                 c.rhs ? readable_number(*c.rhs) : "undefined", to_string(c.verdict));
-    fmt::print(out, "    counterexample scene (check-claim CLAIMS --scene FILE re-fails on it):\n");
-    std::string line;
-    for (char ch : x.scene_yaml) {
-      if (ch != '\n') {
-        line += ch;
-        continue;
-      }
-      fmt::print(out, "      {}\n", line);
-      line.clear();
-    }
+    write_text(out, *r.counterexample);
   }
 }
 

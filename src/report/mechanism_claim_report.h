@@ -21,6 +21,11 @@
 
 namespace linkproof {
 
+/// A shrunk counterexample: {"configuration", "shrink_steps", "shrink_tried", "scene_yaml", "check"}.
+nlohmann::json to_json(const MechanismCounterexample& c);
+/// Its differing values (with decimals) and its scene, indented, for the text reports.
+void write_text(std::ostream& out, const MechanismCounterexample& c);
+
 /// `status`: the program's decisions (report/claims_status.h), one per claim of `run`.
 nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status);
 void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsStatus& status);

@@ -50,6 +50,8 @@ void add_sliding_json(json& j, const MechanismCheck::Sliding& s) {
 
 json point_json(const MechanismCheck::PointMotion& p) {
   json j{{"v", {number_text(p.v[0]), number_text(p.v[1])}}, {"a", {number_text(p.a[0]), number_text(p.a[1])}}};
+  if (is_exact(p.v[0]) && is_exact(p.v[1])) j["v_decimal"] = {decimal_text(p.v[0]), decimal_text(p.v[1])};
+  if (is_exact(p.a[0]) && is_exact(p.a[1])) j["a_decimal"] = {decimal_text(p.a[0]), decimal_text(p.a[1])};
   if (p.slide) j["sliding_v"] = number_text(*p.slide), j["sliding_a"] = number_text(*p.slide_dot);
   // Floating arithmetic: the bound of each value (both components are bounded or neither).
   if (p.v_bound[0] && p.v_bound[1] && p.a_bound[0] && p.a_bound[1]) {
@@ -66,6 +68,8 @@ json point_json(const MechanismCheck::PointMotion& p) {
 json rates_json(const ResultNumber& omega, const ResultNumber& omega_dot, const std::optional<ResultRadius>& omega_bound,
                 const std::optional<ResultRadius>& omega_dot_bound) {
   json j{{"omega", number_text(omega)}, {"omega_dot", number_text(omega_dot)}};
+  if (is_exact(omega)) j["omega_decimal"] = decimal_text(omega);
+  if (is_exact(omega_dot)) j["omega_dot_decimal"] = decimal_text(omega_dot);
   if (omega_bound && omega_dot_bound)
     j["omega_bound"] = radius_text(*omega_bound), j["omega_dot_bound"] = radius_text(*omega_dot_bound);
   return j;
@@ -155,6 +159,7 @@ json claims_summary_json(const std::vector<ClaimOutcome>& claims, const ClaimsSt
 
 void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claims, const ClaimsStatus& status) {
   LINKPROOF_ASSERT(status.as_expected.size() == claims.size(), "one status per claim");
+  bool any_long = false;
   fmt::print(out, "\n{:<48} {:<13} {:<9} {}\n", "claim", "verdict", "expected", "evidence");
   for (size_t k = 0; k < claims.size(); ++k) {
     const ClaimOutcome& cl = claims[k];
@@ -162,12 +167,15 @@ void write_claim_table(std::ostream& out, const std::vector<ClaimOutcome>& claim
     if (evidence.empty()) {
       const auto& h = cl.headline;
       evidence = h.verdict == Verdict::Undefined ? "undefined: " + h.undefined_quantity
-                                                 : fmt::format("{}: {} vs {}", h.label, lhs_text(h), rhs_text(h));
+                                                 : fmt::format("{}: {} vs {}", h.label, lhs_text(h, NumberStyle::Compact),
+                                                               rhs_text(h, NumberStyle::Compact));
+      any_long = any_long || (h.lhs && is_long_fraction(*h.lhs)) || (h.rhs && is_long_fraction(*h.rhs));
     }
     if (status.strict && !status.as_expected[k]) evidence += "  <-- NOT AS EXPECTED (strict)";
     fmt::print(out, "{:<48} {:<13} {:<9} {}\n", cl.info.id, to_string(cl.verdict), to_string(cl.info.expected),
                evidence);
   }
+  if (any_long) fmt::print(out, "{}\n", long_fraction_note());
 }
 
 void write_claim_section(std::ostream& out, const std::vector<ClaimOutcome>& claims,
@@ -238,21 +246,31 @@ void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& 
   // Exact: the columns of old; with bounds ("value +- bound") they are wider.
   const bool bounded = std::any_of(c.omega_bound.begin(), c.omega_bound.end(), [](const auto& b) { return b.has_value(); });
   const int rate_width = bounded ? 40 : 28, point_width = bounded ? 64 : 40;
+  // Exact cells show a long fraction by its decimal and a mark, with one note under the table.
+  CompactCells cells{digits};
+  const auto cell = [&](const ResultNumber& x, const std::optional<ResultRadius>& bound) {
+    return bound ? bounded_text(x, bound, digits) : cells.text(x);
+  };
+  const auto note = [&] {
+    if (cells.any_long) fmt::print(out, "{}\n", long_fraction_note(digits));
+    cells.any_long = false;
+  };
   if (!c.ask || !c.link_names.empty()) {
     fmt::print(out, "{:<10} {:>{}} {:>{}}\n", "link", "omega", rate_width, "omega_dot", rate_width);
     for (size_t l = 0; l < c.link_names.size(); ++l)
-      fmt::print(out, "{:<10} {:>{}} {:>{}}\n", c.link_names[l], bounded_text(c.omega[l], c.omega_bound[l], digits), rate_width,
-                 bounded_text(c.omega_dot[l], c.omega_dot_bound[l], digits), rate_width);
+      fmt::print(out, "{:<10} {:>{}} {:>{}}\n", c.link_names[l], cell(c.omega[l], c.omega_bound[l]), rate_width,
+                 cell(c.omega_dot[l], c.omega_dot_bound[l]), rate_width);
+    note();
   }
   if (!c.ask || !c.joints.empty() || !c.points.empty())
     fmt::print(out, "\n{:<10} {:>{}} {:>{}}\n", "joint", "v", point_width, "a", point_width);
   for (const auto* list : {&c.joints, &c.points})
     for (const auto& p : *list)
       fmt::print(out, "{:<10} {:>{}} {:>{}}{}\n", p.name,
-                 fmt::format("({}, {})", bounded_text(p.v[0], p.v_bound[0], digits), bounded_text(p.v[1], p.v_bound[1], digits)),
-                 point_width,
-                 fmt::format("({}, {})", bounded_text(p.a[0], p.a_bound[0], digits), bounded_text(p.a[1], p.a_bound[1], digits)),
-                 point_width, p.sliding ? "   (slider's point; its sliding rates below)" : "");
+                 fmt::format("({}, {})", cell(p.v[0], p.v_bound[0]), cell(p.v[1], p.v_bound[1])), point_width,
+                 fmt::format("({}, {})", cell(p.a[0], p.a_bound[0]), cell(p.a[1], p.a_bound[1])), point_width,
+                 p.sliding ? "   (slider's point; its sliding rates below)" : "");
+  note();
   write_sliding_section(out, c, digits);
   for (const auto& t : c.tables) {
     fmt::print(out, "\n{}\n", t.title);

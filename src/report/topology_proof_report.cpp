@@ -4,6 +4,7 @@
 #include <fmt/ostream.h>
 
 #include "report/json_report.h"
+#include "report/mechanism_claim_report.h"
 #include "report/number_text.h"
 
 namespace linkproof {
@@ -16,28 +17,7 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
-void print_indented(std::ostream& out, const std::string& text, const char* indent) {
-  std::string line;
-  for (char ch : text) {
-    if (ch != '\n') {
-      line += ch;
-      continue;
-    }
-    fmt::print(out, "{}{}\n", indent, line);
-    line.clear();
-  }
-  if (!line.empty()) fmt::print(out, "{}{}\n", indent, line);
-}
-
 }  // namespace
-
-nlohmann::json to_json(const MechanismCounterexample& x) {
-  return {{"configuration", x.configuration},
-          {"shrink_steps", x.shrink_steps},
-          {"shrink_tried", x.shrink_tried},
-          {"scene_yaml", x.scene_yaml},
-          {"check", to_json(x.outcome)}};
-}
 
 nlohmann::json to_json(const TopologyProofRun& run, const ClaimsStatus& status) {
   using json = nlohmann::json;
@@ -100,13 +80,7 @@ void write_text(std::ostream& out, const TopologyProofRun& run, const ClaimsStat
       fmt::print(out, "    except where:\n");
       for (const ExceptionalSet& e : r.except) fmt::print(out, "      {} = 0   ({})\n", e.polynomial, e.meaning);
     }
-    if (!r.counterexample) continue;
-    const MechanismCounterexample& x = *r.counterexample;
-    for (const ComparisonOutcome& c : x.outcome.instances)
-      fmt::print(out, "    {}: lhs {}  rhs {}  ({})\n", c.label, c.lhs ? number_text(*c.lhs) : "undefined",
-                 c.rhs ? number_text(*c.rhs) : "undefined", to_string(c.verdict));
-    fmt::print(out, "    counterexample scene (check-claim CLAIMS --scene FILE re-fails on it):\n");
-    print_indented(out, x.scene_yaml, "      ");
+    if (r.counterexample) write_text(out, *r.counterexample);
   }
 }
 

@@ -21,7 +21,6 @@
 
 namespace linkproof {
 
-nlohmann::json to_json(const MechanismCounterexample& c);
 nlohmann::json to_json(const TopologyProofRun& run, const ClaimsStatus& status);
 void write_text(std::ostream& out, const TopologyProofRun& run, const ClaimsStatus& status);
 

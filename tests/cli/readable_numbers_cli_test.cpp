@@ -37,14 +37,18 @@ TEST(ReadableNumbersCli, MechanismRatesCarryTheirDecimal) {
 TEST(ReadableNumbersCli, LongFractionsAreShownByDecimalAndSize) {
   const test::CliRun r = test::run_cli({"check", scene("mechanisms/dimensions_fourbar.yaml")});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("(exact: a fraction of "), std::string::npos) << r.out;
-  // No run of 60 digits anywhere in the rates and vectors (the old report printed 400-digit fractions).
-  const std::string tables = r.out.substr(0, r.out.find("\nclaim "));
-  EXPECT_FALSE(std::regex_search(tables, std::regex("[0-9]{60}"))) << tables;
+  // Table cells: a long fraction by its decimal and a mark, explained once under the table.
+  EXPECT_NE(r.out.find("* a long exact fraction (more than 40 characters)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("(exact: a fraction of "), std::string::npos) << "too wide for a table cell\n" << r.out;
+  // No run of 60 digits anywhere, the claims' evidence included (the old report printed
+  // 400-digit fractions in the tables, 60-digit ones in the evidence).
+  EXPECT_FALSE(std::regex_search(r.out, std::regex("[0-9]{60}"))) << r.out;
   // JSON keeps the exact values.
   const test::CliRun j = test::run_cli({"check", scene("mechanisms/dimensions_fourbar.yaml"), "--json"});
   ASSERT_EQ(j.code, 0) << j.err;
   EXPECT_TRUE(std::regex_search(j.out, std::regex("[0-9]{60}")));
+  EXPECT_NE(j.out.find("\"omega_decimal\""), std::string::npos);
+  EXPECT_NE(j.out.find("\"v_decimal\""), std::string::npos);
 }
 
 TEST(ReadableNumbersCli, DigitsOutOfRangeOrWithJsonIsRefused) {
