@@ -476,11 +476,16 @@ class TopologyProver {
       NamedDegeneracies claim_named;
       claim_degeneracies(claim.lhs.root(), frame, claim_named);
       claim_degeneracies(claim.rhs.root(), frame, claim_named);
-      for (auto& [poly, meaning] : claim_named) poly = clear_delta(normalizer.numerator(poly), m);
-      // What was divided by, as polynomials in the coordinates: det A where the rates enter, and
-      // the numerators of the claim's own divisors.
+      // What was divided by, as polynomials in the coordinates: det A where the rates enter, the
+      // claim's own divisors as written (GiNaC simplifies x/x to 1 when it builds an expression:
+      // the words' degeneracies keep them), and the divisors left in the expressions.
       std::vector<ex> divisors;
       if (uses_motion) divisors.push_back(m.det);
+      for (auto& [poly, meaning] : claim_named) {
+        poly = clear_delta(normalizer.numerator(poly), m);
+        if (reduce_on_circles(poly, config_.unit_axes).is_zero()) return undefined_everywhere(p, meaning);
+        divisors.push_back(poly);
+      }
       for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(clear_delta(normalizer.numerator(d), m));
       const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
           divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
@@ -523,8 +528,16 @@ class TopologyProver {
     NamedDegeneracies named;
     claim_degeneracies(claim.lhs.root(), frame, named);
     claim_degeneracies(claim.rhs.root(), frame, named);
-    for (auto& [poly, meaning] : named) poly = normalizer.numerator(poly);
     std::vector<ex> divisors;
+    for (auto& [poly, meaning] : named) {  // the claim's divisors as written (see step 1)
+      poly = normalizer.numerator(poly);
+      RationalNormalizer solved(false);
+      if (reduce_on_circles(clear_delta(solved.numerator(poly.subs(m.solved_rates)), m), config_.unit_axes).is_zero()) {
+        undefined_everywhere(p, meaning);
+        return true;
+      }
+      divisors.push_back(poly);
+    }
     for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(normalizer.numerator(d));
     const std::vector<proof_detail::NamedFactor> factors =
         proof_detail::divisor_factors(divisors, {[&] { return named; }}, normalizer, true);
@@ -551,6 +564,12 @@ class TopologyProver {
                                           : fmt::format("it holds wherever none of the {} factor(s) listed vanishes",
                                                         p.except.size()));
     return true;
+  }
+
+  // A claim whose degeneracy `meaning` holds on every configuration (with the solved rates).
+  static void undefined_everywhere(TopologyProof& p, const std::string& meaning) {
+    p.verdict = ProofVerdict::Error;
+    p.error = "the claim is undefined on every configuration of the topology: " + meaning + " everywhere";
   }
 
   // The randomized identity test (the header comment); samples if it cannot be done.

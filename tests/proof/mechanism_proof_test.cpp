@@ -138,7 +138,13 @@ TEST(MechanismProof, AClaimUndefinedOnEveryConfigurationIsAnErrorNotAProof) {
     statement: "omega_3 / (omega_2 - omega_2)"
     lhs: omega("3") / (omega("2") - omega("2"))
     rhs: 1
+  - id: zero_over_zero_by_the_loop_closure
+    source: test
+    statement: "x / x = 1 with x = 0 on every configuration (v_B of the coupler and of the rocker agree)"
+    lhs: vx(vel(B, "3") - vel(B, "4")) / vx(vel(B, "3") - vel(B, "4"))
+    rhs: 1
 )yaml", s), {});
+  ASSERT_EQ(run.claims.size(), 3u);
   for (const TopologyProof& p : run.claims) {
     EXPECT_EQ(p.verdict, ProofVerdict::Error) << p.info.id;
     EXPECT_FALSE(p.is_as_expected()) << p.info.id;
