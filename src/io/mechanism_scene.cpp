@@ -388,7 +388,9 @@ class MechanismReader {
       placement.joints.push_back({out[i].name, kind_names.at(specs[i].kind), p.exact, p.bound});
     }
     // An axis {from: J}: the direction from joint J to this joint (a radial slot).
-    for (const auto& [i, from] : axis_from) {
+    for (const auto& entry : axis_from) {  // not a structured binding: clang 14 cannot capture one
+      const size_t i = entry.first;
+      const std::string& from = entry.second;
       const std::string f = fmt::format("mechanism.joints[{}].axis", i);
       const auto it = std::find_if(out.begin(), out.end(), [&](const LinkageJoint& o) { return o.name == from; });
       if (it == out.end()) fail(f + ".from", "unknown joint " + backticked(from));
