@@ -430,16 +430,13 @@ class TopologyProver {
 
   void prove_symbolically(const MechanismDataClaim& claim, TopologyProof& p, Clock::time_point start) {
     const SymbolicMotion& m = motion();
-    const auto fall_back = [&](const std::string& why) {
-      take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling, why);
-    };
     if (m.singular_everywhere) {
       p.verdict = ProofVerdict::Error;
       p.error = m.note;
       return;
     }
-    if (!m.note.empty()) return fall_back("no symbolic proof: " + m.note);
-    if (reduce_on_circles(m.det, config_.unit_axes).is_zero()) {
+    if (!m.note.empty()) return judge_on_samples(claim, p, "no symbolic proof: " + m.note);
+    if (vanishes_on_circles(m.det)) {
       p.verdict = ProofVerdict::Error;
       p.error = "the velocity system is singular on every configuration whose axes are unit vectors (det A = 0 there)";
       return;
@@ -483,21 +480,13 @@ class TopologyProver {
       if (uses_motion) divisors.push_back(m.det);
       for (auto& [poly, meaning] : claim_named) {
         poly = clear_delta(normalizer.numerator(poly), m);
-        if (reduce_on_circles(poly, config_.unit_axes).is_zero()) return undefined_everywhere(p, meaning);
+        if (vanishes_on_circles(poly)) return undefined_everywhere(p, meaning);
         divisors.push_back(poly);
       }
       for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(clear_delta(normalizer.numerator(d), m));
       const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
           divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
-      for (const proof_detail::NamedFactor& f : factors) {
-        if (reduce_on_circles(f.factor, config_.unit_axes).is_zero()) {
-          p.verdict = ProofVerdict::Error;
-          p.error = fmt::format("the claim is undefined on every configuration: it divides by {}, which is 0 wherever the "
-                                "axes are unit vectors", to_text(f.factor));
-          return;
-        }
-        p.except.push_back({to_text(f.factor), f.meaning.empty() ? "unnamed: a factor of a divisor" : f.meaning});
-      }
+      if (!take_exceptions(p, factors, [&](const ex& f) { return vanishes_on_circles(f); })) return;
       p.verdict = p.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
       p.argument.push_back(p.except.empty() ? std::string("no division by a non-constant: it holds on every configuration")
                                             : fmt::format("it holds on every configuration outside the zero sets of the {} "
@@ -524,15 +513,19 @@ class TopologyProver {
     normalizer.set_term_limit(kTermLimit);
     normalizer.set_deadline(deadline);
     for (const auto& [component, residual] : values.residuals)
-      if (!reduce_on_circles(normalizer.numerator(residual), config_.unit_axes).is_zero()) return false;
+      if (!vanishes_on_circles(normalizer.numerator(residual))) return false;
     NamedDegeneracies named;
     claim_degeneracies(claim.lhs.root(), frame, named);
     claim_degeneracies(claim.rhs.root(), frame, named);
+    // A polynomial in the free rates that is 0 once the solved rates are put in.
+    const auto vanishes = [&](const ex& poly) {
+      RationalNormalizer solved(false);
+      return vanishes_on_circles(clear_delta(solved.numerator(poly.subs(m.solved_rates)), m));
+    };
     std::vector<ex> divisors;
     for (auto& [poly, meaning] : named) {  // the claim's divisors as written (see step 1)
       poly = normalizer.numerator(poly);
-      RationalNormalizer solved(false);
-      if (reduce_on_circles(clear_delta(solved.numerator(poly.subs(m.solved_rates)), m), config_.unit_axes).is_zero()) {
+      if (vanishes(poly)) {
         undefined_everywhere(p, meaning);
         return true;
       }
@@ -541,18 +534,7 @@ class TopologyProver {
     for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(normalizer.numerator(d));
     const std::vector<proof_detail::NamedFactor> factors =
         proof_detail::divisor_factors(divisors, {[&] { return named; }}, normalizer, true);
-    for (const proof_detail::NamedFactor& f : factors) {
-      // With the solved rates a factor may vanish on every configuration: then nothing is proved.
-      RationalNormalizer solved(false);
-      const ex on_motion = reduce_on_circles(clear_delta(solved.numerator(f.factor.subs(m.solved_rates)), m), config_.unit_axes);
-      if (on_motion.is_zero()) {
-        p.verdict = ProofVerdict::Error;
-        p.error = fmt::format("the claim is undefined on every configuration: it divides by {}, which is 0 for the rates "
-                              "of every configuration", to_text(f.factor));
-        return true;
-      }
-      p.except.push_back({to_text(f.factor), f.meaning.empty() ? "unnamed: a factor of a divisor" : f.meaning});
-    }
+    if (!take_exceptions(p, factors, vanishes)) return true;
     p.verdict = p.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
     p.argument.push_back(fmt::format(
         "lhs - rhs is identically zero for every value of the links' rates (omega_L, alpha_L{}) and of the {} "
@@ -563,6 +545,30 @@ class TopologyProver {
                                                         "for any rates the constraints admit")
                                           : fmt::format("it holds wherever none of the {} factor(s) listed vanishes",
                                                         p.except.size()));
+    return true;
+  }
+
+  bool vanishes_on_circles(const ex& polynomial) const {
+    return reduce_on_circles(polynomial, config_.unit_axes).is_zero();
+  }
+
+  void judge_on_samples(const MechanismDataClaim& claim, TopologyProof& p, const std::string& why) {
+    take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling, why);
+  }
+
+  // The factors as the claim's exceptional set; false, with the claim an error, if one of them
+  // is 0 on every configuration (`vanishes`).
+  template <class Vanishes>
+  static bool take_exceptions(TopologyProof& p, const std::vector<proof_detail::NamedFactor>& factors, Vanishes vanishes) {
+    for (const proof_detail::NamedFactor& f : factors) {
+      if (vanishes(f.factor)) {
+        p.verdict = ProofVerdict::Error;
+        p.error = fmt::format("the claim is undefined on every configuration of the topology: it divides by {}, which "
+                              "is 0 on every configuration", to_text(f.factor));
+        return false;
+      }
+      p.except.push_back({to_text(f.factor), f.meaning.empty() ? "unnamed: a factor of a divisor" : f.meaning});
+    }
     return true;
   }
 
@@ -585,8 +591,7 @@ class TopologyProver {
         den += b.den;
       }
     } catch (const DegreeBounds::NoDegreeBound&) {
-      return take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling,
-                          why + "; no degree bound for a randomized identity test");
+      return judge_on_samples(claim, p, why + "; no degree bound for a randomized identity test");
     }
     if (!config_.unit_axes.empty()) num *= 2, den *= 2;  // through u(t) = ((1 - t^2), 2t) / (1 + t^2)
     const double per_trial = static_cast<double>(num) / (kIdentityTestRange - static_cast<double>(den));
@@ -643,9 +648,8 @@ class TopologyProver {
       ++passed;
     }
     if (passed < kIdentityTestTrials)
-      return take_samples(p, sample_claim(scene_, claim, options_.sampling, options_.sampling.count), options_.sampling,
-                          why + fmt::format("; only {} of {} random configurations with 40-bit coordinates were defined",
-                                            passed, attempts));
+      return judge_on_samples(claim, p, why + fmt::format("; only {} of {} random configurations with 40-bit "
+                                                          "coordinates were defined", passed, attempts));
     p.verdict = ProofVerdict::HoldsWithProbability;
     p.trials = passed;
     p.degree_bound = num;

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "support/cli_run.h"
+#include "support/counterexample_replay.h"
 
 namespace linkproof {
 namespace {
@@ -70,18 +71,7 @@ TEST(MechanismClaimCli, TopologyHoldsOnSamplesOrDisprovesWithAReplayableCountere
         continue;
       }
       ASSERT_EQ(c["verdict"], "disproved") << id;
-      const std::string yaml = c["counterexample"]["scene_yaml"];
-      const std::string path = ::testing::TempDir() + "cx_" + id + ".yaml";
-      std::ofstream(path) << yaml;
-      const CliRun replay = run_cli({"check-claim", source(p.claims), "--scene", path, "--json"});
-      const auto rj = nlohmann::json::parse(replay.out);
-      bool found = false;
-      for (const auto& rc : rj["claims"])
-        if (rc["id"] == id) {
-          found = true;
-          EXPECT_EQ(rc["verdict"], "fails") << id << "\n" << yaml;
-        }
-      EXPECT_TRUE(found) << id;
+      test::expect_counterexample_refails(source(p.claims), id, c["counterexample"]["scene_yaml"], "cx_");
     }
   }
 }

@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "support/cli_run.h"
+#include "support/counterexample_replay.h"
 
 namespace linkproof {
 namespace {
@@ -42,18 +43,7 @@ TEST(TopologyProofCli, TrueClaimsAreProvedAndWrongOnesDisprovedWithReplayableCou
         continue;
       }
       ASSERT_EQ(c["verdict"], "disproved") << id;
-      const std::string yaml = c["counterexample"]["scene_yaml"];
-      const std::string path = ::testing::TempDir() + "tp_" + id + ".yaml";
-      std::ofstream(path) << yaml;
-      const CliRun replay = run_cli({"check-claim", source(p.claims), "--scene", path, "--json"});
-      bool found = false;
-      const auto replayed = nlohmann::json::parse(replay.out);
-      for (const auto& rc : replayed["claims"])
-        if (rc["id"] == id) {
-          found = true;
-          EXPECT_EQ(rc["verdict"], "fails") << id << "\n" << yaml;
-        }
-      EXPECT_TRUE(found) << id;
+      test::expect_counterexample_refails(source(p.claims), id, c["counterexample"]["scene_yaml"], "tp_");
     }
   }
 }
