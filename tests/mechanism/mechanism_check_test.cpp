@@ -19,16 +19,6 @@
 namespace linkproof {
 namespace {
 
-Rational exact_of(const ResultNumber& x) {
-  return std::visit(
-      [](const auto& v) -> Rational {
-        using V = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<V, Rational>) return v;
-        else if constexpr (std::is_same_v<V, cln::cl_F>) return cln::rational(v);
-        else return exact_value_of(v);
-      },
-      x);
-}
 
 struct Enclosure {
   int values = 0, positive_bounds = 0;
@@ -42,7 +32,7 @@ struct Enclosure {
     const double b = to_double_up(*bound);
     ASSERT_TRUE(std::isfinite(b)) << what;
     positive_bounds += b > 0;
-    const Rational error = cln::abs(std::get<Rational>(exact) - exact_of(midpoint));
+    const Rational error = cln::abs(std::get<Rational>(exact) - testing::exact_value_of_result(midpoint));
     EXPECT_LE(error, rational_from_double(b)) << what << ": exact " << format_rational(std::get<Rational>(exact))
                                               << ", bound " << b;
     // A bound that means something: a few hundred units of roundoff of the value's size.

@@ -5,6 +5,13 @@
 #include <utility>
 #include <vector>
 
+#include <cln/real.h>
+
+#include <type_traits>
+#include <variant>
+
+#include "core/scalar.h"
+#include "linkproof/core/result_number.h"
 #include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof::testing {
@@ -38,6 +45,18 @@ inline MechanismScene make_scene(const Topology& t, const std::vector<Vec2<Ratio
   s.linkage = Linkage(t.links, t.ground, std::move(joints));
   s.inputs = {MechanismInput{MechanismInput::Kind::Link, t.input, w, wd}};
   return s;
+}
+
+/// The exact rational value of a result: the rational itself, or a float's (midpoint's) value.
+inline Rational exact_value_of_result(const ResultNumber& x) {
+  return std::visit(
+      [](const auto& v) -> Rational {
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, Rational>) return v;
+        else if constexpr (std::is_same_v<V, cln::cl_F>) return cln::rational(v);
+        else return exact_value_of(v);
+      },
+      x);
 }
 
 }  // namespace linkproof::testing

@@ -124,16 +124,6 @@ bool root_form_within(const Rational& c, const cln::cl_I& m, const Rational& lo,
   return at_least(lo) && at_most(hi);
 }
 
-Rational midpoint_of(const ResultNumber& x) {
-  return std::visit(
-      [](const auto& v) -> Rational {
-        using V = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<V, Rational>) return v;
-        else if constexpr (std::is_same_v<V, cln::cl_F>) return cln::rational(v);
-        else return exact_value_of(v);
-      },
-      x);
-}
 
 TEST(SlidingRates, FloatingRatesAlongTheUnitAxisEncloseTheExactRoot) {
   const MechanismCheck x = check_text(slider_crank("[1, 1]"));
@@ -149,13 +139,13 @@ TEST(SlidingRates, FloatingRatesAlongTheUnitAxisEncloseTheExactRoot) {
       const double b = to_double_up(*bound);
       EXPECT_GT(b, 0) << where;
       EXPECT_LE(b, 1e-9 * (1 + std::abs(to_double(value)))) << where;
-      const Rational m = midpoint_of(value), r = rational_from_double(b);
+      const Rational m = testing::exact_value_of_result(value), r = rational_from_double(b);
       EXPECT_TRUE(root_form_within(coefficient, e.rate_radicand, m - r, m + r))
           << where << ": " << format_rational(coefficient) << "*sqrt(2) not within " << b << " of " << to_double(value);
     }
     for (int k = 0; k < 2; ++k) {
       ASSERT_TRUE(s.coriolis_bound[k].has_value()) << where;
-      const Rational m = midpoint_of(s.coriolis[k]);
+      const Rational m = testing::exact_value_of_result(s.coriolis[k]);
       EXPECT_LE(cln::abs(m - exact(e.coriolis[k])), rational_from_double(to_double_up(*s.coriolis_bound[k]))) << where;
     }
   }
