@@ -85,7 +85,8 @@ TEST(SlidingRates, AnIrrationalAxisLengthIsStatedExactlyAsARoot) {
     EXPECT_EQ(s.rate_radicand, 2) << axis;
     EXPECT_EQ(exact(s.v_unit), Rational(-96) / 5) << axis << ": the coefficient of sqrt(2)";
   }
-  const auto& s = *joint_named(check_text(slider_crank("[2, 2]")), "D").sliding;
+  const MechanismCheck c = check_text(slider_crank("[2, 2]"));
+  const auto& s = *joint_named(c, "D").sliding;
   EXPECT_EQ(s.axis_length, 2);  // |(2, 2)| = 2 sqrt(2)
 }
 
@@ -180,7 +181,8 @@ TEST(SlidingCoriolis, InvertedSliderCrankMatchesTheHandComputation) {
 }
 
 TEST(SlidingCoriolis, VanishesOnAFrameFixedGuide) {
-  const auto& s = *joint_named(check_text(slider_crank("[1, 0]")), "D").sliding;
+  const MechanismCheck c = check_text(slider_crank("[1, 0]"));
+  const auto& s = *joint_named(c, "D").sliding;
   EXPECT_EQ(exact(s.coriolis[0]), 0);
   EXPECT_EQ(exact(s.coriolis[1]), 0);
 }
