@@ -1,13 +1,13 @@
 // linkproof check-claim FILE.yaml [--n A..B] [--count N] [--seed S] [--scene SCENE [--arith A]] [--json]
 // linkproof check-claim FILE.yaml --scene MECHANISM_SCENE [--json]
-// linkproof check-claim FILE.yaml --topology MECHANISM_SCENE [--count K] [--seed S] [--proof-seconds S] [--json]
+// linkproof check-claim FILE.yaml --topology MECHANISM_SCENE [--count K [--arith A]] [--seed S] [--proof-seconds S] [--json]
 // linkproof check-claim --vocabulary
 //
 // Mechanism claims (docs/claims.md, "Mechanism claims"): with a mechanism scene, FILE is read in
 // the mechanism vocabulary; --scene judges every claim on the scene's exact solution, --topology
 // proves it over every configuration of the scene's topology (proof/mechanism_proof.h), or with
-// --count K judges it on K random exact configurations (holds_on_samples, not a proof, or
-// disproved with a shrunk counterexample scene).
+// --count K judges it on K random configurations, exactly or in --arith A with derived error
+// bounds (holds_on_samples, not a proof, or disproved with a shrunk exact counterexample scene).
 //
 // A user's claims: proved for every n (symbolic, with the exceptional set), proved for the
 // given n, holding on every random exact instance (no proof found), or failing with an exact
@@ -61,8 +61,12 @@ void print_vocabulary(std::ostream& out) {
 }
 
 int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path, bool topology, std::ostream& out) {
-  if (a.arith != "exact")
-    throw InputError("<command line>", "--arith", "mechanism claims are evaluated in exact arithmetic only");
+  // A proof and a scene's check are exact; random configurations may be judged in any
+  // arithmetic (floating point with derived error bounds).
+  if (a.arith != "exact" && !(topology && a.count_given))
+    throw InputError("<command line>", "--arith",
+                     "mechanism claims are evaluated exactly, except on random configurations of a topology "
+                     "(--topology SCENE --count K --arith A)");
   if (!a.n_range.empty()) throw InputError("<command line>", "--n", "applies to polygon claims, not to a mechanism scene");
   const MechanismScene scene = load_mechanism_scene(scene_path);
   const std::vector<MechanismDataClaim> claims = mechanism_claims_for(a.file, scene, scene_path);
@@ -89,6 +93,7 @@ int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path,
   TopologySampling o;
   o.count = a.count;
   o.seed = a.seed;
+  o.arithmetic = arithmetic_or_throw(a.arith);
   const TopologySampleRun run = sample_topology(scene, claims, o);
   const ClaimsStatus status = sampling_status(run, a.strict);
   if (a.json)

@@ -23,12 +23,27 @@ double nearest_subnormal(const Rational& q) {
   return std::ldexp(static_cast<double>(cln::cl_I_to_long(k)), -1074);
 }
 
+/// An integer of at most 53 bits: exact in double and long double, so its rounding is
+/// cln::double_approx itself. The fast path of from_int<T> and of integer coordinates, which
+/// every floating solve converts many times (the general path below compares neighbours exactly).
+bool is_small_integer(const Rational& q) {
+  return cln::denominator(q) == 1 && cln::integer_length(cln::numerator(q)) <= 53;
+}
+
+/// p/q with |p|, q < 2^53 (both exact in double): IEEE division of exact operands is correctly
+/// rounded to nearest, ties to even, and the quotient (>= 2^-53) is never subnormal.
+bool is_small_fraction(const Rational& q) {
+  return cln::integer_length(cln::numerator(q)) <= 53 && cln::integer_length(cln::denominator(q)) <= 53;
+}
+
 }  // namespace
 
 /// Correctly rounded (to nearest, ties to even): cln::double_approx is only an approximation,
 /// so its neighbours are compared exactly.
 template <>
 double round_rational<double>(const Rational& q) {
+  if (is_small_integer(q)) return cln::double_approx(q);
+  if (is_small_fraction(q)) return cln::double_approx(cln::numerator(q)) / cln::double_approx(cln::denominator(q));
   if (below_normal_range(q)) return nearest_subnormal(q);
   double best = cln::double_approx(q);
   if (!std::isfinite(best)) return best;
@@ -86,6 +101,7 @@ F round_by_integers(const Rational& q) {
 /// double conversion, and going through double would flush everything outside double's range.
 template <>
 long double round_rational<long double>(const Rational& q) {
+  if (is_small_integer(q)) return static_cast<long double>(cln::double_approx(q));
   return round_by_integers<long double>(q);
 }
 
@@ -104,6 +120,9 @@ template std::string format_float<long double>(long double);
 
 template <class F>
 Rational exact_value_of(F x) {
+  // An integer below 2^62 converts exactly through long long (the fast path of integer values).
+  if (std::abs(x) < F(4611686018427387904.0) && x == std::trunc(x))
+    return cln::cl_I(static_cast<long long>(x));
   int exponent = 0;
   const F mantissa = std::frexp(x, &exponent);  // x = mantissa * 2^exponent, |mantissa| in [0.5,1)
   constexpr int digits = std::numeric_limits<F>::digits;

@@ -4,7 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 
+#include "check/arithmetic_types.h"
 #include "core/symbolic_scalar.h"
 #include "mechanism/curvature.h"
 
@@ -94,16 +97,18 @@ const LinkField<T>& field_of(const Node& n, const MechanismFrameOf<T>& f) {
 template <class T>
 T axis_length(const Node& n, const MechanismFrameOf<T>& f) {
   if (f.unit_axes) return from_int<T>(1);
-  if constexpr (std::is_same_v<T, Rational>) {
+  if constexpr (std::is_same_v<T, GiNaC::ex>) {
+    undefined(n, "the axis length of a symbolic axis that is not a unit vector");
+  } else {
+    // The scene's exact axis: its length is rational or the quantity is undefined, in every
+    // arithmetic alike (a floating run never rounds an irrational |u| into a value).
     const V& u = f.scene.linkage.joint(n.index).axis;
     cln::cl_RA root;
     if (!cln::sqrtp(norm2(u), &root))
       undefined(n, fmt::format("the axis ({}, {}) of joint '{}' has an irrational length: give it as a rational unit "
                                "direction (e.g. [3/5, 4/5] or an angle) or compare dot(vel(J, slider, guide), axis)",
                                format_rational(u.x), format_rational(u.y), n.name));
-    return root;
-  } else {
-    undefined(n, "the axis length of a symbolic axis that is not a unit vector");
+    return from_rational<T>(root);
   }
 }
 
@@ -118,12 +123,27 @@ T integer_power(const T& b, int e) {
   return e < 0 ? from_int<T>(1) / result : result;
 }
 
+// The largest magnitude of a summand met while evaluating a claim in floating point: the scale a
+// derived error bound is judged against (check/judge.h), so that a claim whose sides are exactly 0
+// (a closed polygon: sum of terms = 0) is confirmed to the accuracy of its terms.
+struct SummandScale {
+  double largest = 0;
+  template <class T>
+  void add(const Value<T>& v) {
+    if constexpr (ScalarTraits<T>::has_error_bound)
+      for (const T* c : {&v.x, &v.y}) largest = std::max(largest, std::min(std::abs(ScalarTraits<T>::to_double(*c)), DBL_MAX));
+  }
+};
+
 template <class T>
-Value<T> call(const Node& n, const MechanismFrameOf<T>& f) {
+Value<T> evaluate_node(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale);
+
+template <class T>
+Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) {
   using Q = MechanismQuantity;
   using P = PlanePoint<T>;
   const auto& a = n.children;
-  const auto value = [&](size_t k) { return evaluate_mechanism_expression(a[k], f); };
+  const auto value = [&](size_t k) { return evaluate_node(a[k], f, scale); };
   const auto link_motion = [&](bool relative) {
     const LinkField<T>& m = field_of(a[1], f);
     const Vec2<T>& X = position(a[0], f);
@@ -206,26 +226,29 @@ void bind_mechanism_claim(MechanismDataClaim& claim, const MechanismScene& scene
   bind(claim.rhs.root(), scene, claim.rhs.field());
 }
 
+namespace {
+
 template <class T>
-MechanismValueOf<T> evaluate_mechanism_expression(const Node& n, const MechanismFrameOf<T>& f) {
+Value<T> evaluate_node(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) {
   switch (n.op) {
     case Node::Op::Constant: return number(from_rational<T>(n.constant));
     case Node::Op::Name: LINKPROOF_ASSERT(false, "a name evaluated as a value"); return {};
-    case Node::Op::Call: return call(n, f);
+    case Node::Op::Call: return call(n, f, scale);
     case Node::Op::Negate: {
-      Value<T> v = evaluate_mechanism_expression(n.children[0], f);
+      Value<T> v = evaluate_node(n.children[0], f, scale);
       v.x = -v.x, v.y = -v.y;
       return v;
     }
     case Node::Op::Power: {
-      const T b = evaluate_mechanism_expression(n.children[0], f).x;
+      const T b = evaluate_node(n.children[0], f, scale).x;
       if (n.exponent < 0 && is_zero(b)) throw UndefinedQuantity(n.children[0].text, "a negative power of 0 (it is 0 here)");
       return number(integer_power(b, n.exponent));
     }
     default: break;
   }
-  const Value<T> a = evaluate_mechanism_expression(n.children[0], f);
-  const Value<T> b = evaluate_mechanism_expression(n.children[1], f);
+  const Value<T> a = evaluate_node(n.children[0], f, scale);
+  const Value<T> b = evaluate_node(n.children[1], f, scale);
+  if (scale && (n.op == Node::Op::Add || n.op == Node::Op::Subtract)) scale->add(a), scale->add(b);
   switch (n.op) {
     case Node::Op::Add: return {a.is_vector, a.x + b.x, a.y + b.y};
     case Node::Op::Subtract: return {a.is_vector, a.x - b.x, a.y - b.y};
@@ -242,29 +265,48 @@ MechanismValueOf<T> evaluate_mechanism_expression(const Node& n, const Mechanism
   return {};
 }
 
-template struct MechanismFrameOf<Rational>;
-template struct MechanismFrameOf<GiNaC::ex>;
-template MechanismValueOf<Rational> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<Rational>&);
-template MechanismValueOf<GiNaC::ex> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<GiNaC::ex>&);
+}  // namespace
 
-ClaimSides<Rational> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrame& f) {
+template <class T>
+MechanismValueOf<T> evaluate_mechanism_expression(const Node& n, const MechanismFrameOf<T>& f) {
+  return evaluate_node(n, f, nullptr);
+}
+
+template <class T>
+ClaimSides<T> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrameOf<T>& f) {
+  SummandScale scale;
   const auto side = [&](const MechanismExpression& e) {
-    return Defined<MechanismValue>::attempt([&] { return evaluate_mechanism_expression(e.root(), f); });
+    return Defined<Value<T>>::attempt([&] {
+      const Value<T> v = evaluate_node(e.root(), f, &scale);
+      scale.add(v);  // a vector's components are judged against its larger one
+      return v;
+    });
   };
-  const Defined<MechanismValue> l = side(claim.lhs), r = side(claim.rhs);
-  const auto component = [](const Defined<MechanismValue>& v, bool y) {
-    if (!v.has_value()) return Defined<Rational>::undefined(v.quantity(), v.reason());
-    return Defined<Rational>(y ? v.get().y : v.get().x);
+  const Defined<Value<T>> l = side(claim.lhs), r = side(claim.rhs);
+  const auto component = [](const Defined<Value<T>>& v, bool y) {
+    if (!v.has_value()) return Defined<T>::undefined(v.quantity(), v.reason());
+    return Defined<T>(y ? v.get().y : v.get().x);
   };
-  ClaimSides<Rational> s;
+  ClaimSides<T> s;
   if (claim.lhs.kind() == MechanismKind::Vector) {
-    s.instances.push_back({"x", component(l, false), component(r, false)});
-    s.instances.push_back({"y", component(l, true), component(r, true)});
+    s.instances.push_back({"x", component(l, false), component(r, false), scale.largest});
+    s.instances.push_back({"y", component(l, true), component(r, true), scale.largest});
   } else {
-    s.instances.push_back({"total", component(l, false), component(r, false)});
+    s.instances.push_back({"total", component(l, false), component(r, false), scale.largest});
   }
   return s;
 }
+
+// Every arithmetic (exact and the floating ones with their error bounds: a sample of a
+// topology in `--arith A`), and GiNaC expressions for the proof over a topology.
+#define LINKPROOF_INSTANTIATE_MECHANISM_CLAIM(enumerator, name, type)                                       \
+  template struct MechanismFrameOf<type>;                                                                  \
+  template MechanismValueOf<type> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<type>&); \
+  template ClaimSides<type> evaluate_mechanism_claim(const MechanismDataClaim&, const MechanismFrameOf<type>&);
+LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_INSTANTIATE_MECHANISM_CLAIM)
+template struct MechanismFrameOf<GiNaC::ex>;
+template MechanismValueOf<GiNaC::ex> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<GiNaC::ex>&);
+#undef LINKPROOF_INSTANTIATE_MECHANISM_CLAIM
 
 MechanismClaim to_mechanism_claim(const MechanismDataClaim& claim) {
   MechanismClaim c;

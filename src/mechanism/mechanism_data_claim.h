@@ -8,9 +8,9 @@
 // proof/mechanism_sampling.h) uses the same binding.
 //
 // Evaluation (MechanismFrameOf<T>): every value is a number or a pair of them in T (exact
-// rationals; GiNaC expressions of a topology's symbols for proof/mechanism_proof.h), from the
-// link fields of mechanism/poles.h (v_L(X) = v0_L + omega_L J X, a_L(X) = a0_L + alpha_L J X -
-// omega_L^2 X); a quantity that does not exist (a division by 0, a pole at infinity, parallel
+// rationals; a floating arithmetic with error bounds; GiNaC expressions of a topology's symbols
+// for proof/mechanism_proof.h), from the link fields of mechanism/poles.h (v_L(X) = v0_L +
+// omega_L J X, a_L(X) = a0_L + alpha_L J X - omega_L^2 X); a quantity that does not exist (a division by 0, a pole at infinity, parallel
 // lines in meet, the curvature centre of a point at the pole) throws UndefinedQuantity naming it
 // as written, which the claim's run turns into the verdict `undefined`.
 #pragma once
@@ -53,13 +53,17 @@ using MechanismFrame = MechanismFrameOf<Rational>;
 void bind_mechanism_claim(MechanismDataClaim& claim, const MechanismScene& scene);
 
 /// The value of a bound expression; throws UndefinedQuantity where a quantity does not exist.
-/// Instantiated for Rational and GiNaC::ex (where "does not exist" means "for every
+/// Instantiated for every arithmetic (check/arithmetic_types.h; in a floating one "does not
+/// exist" means "is certainly 0": a divisor whose enclosure merely contains 0 gives an unbounded
+/// error bound, which the judge calls inconclusive) and for GiNaC::ex (where it means "for every
 /// configuration": a divisor that is identically 0).
 template <class T>
 MechanismValueOf<T> evaluate_mechanism_expression(const MechanismNode& node, const MechanismFrameOf<T>& frame);
 
 /// The comparisons of a bound claim: "total" for a number claim, "x" and "y" for a vector claim.
-ClaimSides<Rational> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrame& frame);
+/// Instantiated for every arithmetic.
+template <class T>
+ClaimSides<T> evaluate_mechanism_claim(const MechanismDataClaim& claim, const MechanismFrameOf<T>& frame);
 
 /// The claim as a MechanismClaim (run by run_mechanism_claim; the claim must be bound to a scene
 /// with the names of the one it is run on).

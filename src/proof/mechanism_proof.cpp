@@ -299,6 +299,7 @@ void take_samples(TopologyProof& p, SampleResult r, const TopologySampling& o, c
                                        "evidence, NOT a proof", why, r.compared, o.seed));
       return;
     case TopologyVerdict::Undefined:
+    case TopologyVerdict::Inconclusive:  // not reached: the prover samples exactly
       p.verdict = ProofVerdict::Error;
       p.error = fmt::format("{}; and the claim is undefined on every configuration drawn: {}: {}", why,
                             r.undefined_quantity, r.undefined_reason);

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <map>
 
+#include "check/arithmetic_types.h"
+#include "check/judge.h"
 #include "check/random_polygon.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
@@ -88,6 +90,88 @@ bool is_readable(const MechanismScene& s) {
   } catch (const InputError&) {
     return false;
   }
+}
+
+// The verdict of one claim on a configuration solved in a floating arithmetic T (Tracked<F>):
+// every comparison judged with its derived bound; the first inconclusive one's reason is kept.
+template <class T>
+Verdict floating_verdict(const MechanismDataClaim& claim, const MechanismFrameOf<T>& frame, SampleResult& r) {
+  Verdict v = Verdict::Holds;
+  try {
+    const ClaimSides<T> sides = evaluate_mechanism_claim(claim, frame);
+    for (const Comparison<T>& c : sides.instances) {
+      const ComparisonOutcome o = judge(c);
+      if (o.verdict == Verdict::Undefined && r.undefined_quantity.empty())
+        r.undefined_quantity = o.undefined_quantity, r.undefined_reason = o.reason;
+      if (o.verdict == Verdict::Inconclusive && !r.first_inconclusive) r.first_inconclusive = o;
+      v = combine(v, o.verdict);
+    }
+  } catch (const cln::floating_point_exception& e) {  // e.g. an exponent overflow of a CLN float
+    if (!r.first_inconclusive) {
+      ComparisonOutcome o;
+      o.label = "total";
+      o.verdict = Verdict::Inconclusive;
+      o.reason = e.what();
+      r.first_inconclusive = std::move(o);
+    }
+    return Verdict::Inconclusive;
+  }
+  return v;
+}
+
+// The verdict of each open claim (not `done`) on configuration s, solved and judged in T, each
+// claim's time added to `seconds`; nullopt where s is singular in T. A floating failure is
+// confirmed exactly: the bounds are rigorous, so the exact sides must differ, and the
+// counterexample that is shrunk and written is an exact one.
+template <class T>
+std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene& topology, const Layout& layout,
+                                                           const Config& config, const std::string& name,
+                                                           const std::vector<MechanismDataClaim>& claims,
+                                                           const std::vector<bool>& done,
+                                                           std::vector<SampleResult>& results,
+                                                           std::vector<double>& seconds) {
+  using Clock = std::chrono::steady_clock;
+  // Solved from the values in T alone (the topology's linkage, the configuration's geometry):
+  // the scene is built only for a failure, which must be confirmed and replayed.
+  const TopologyValuesIn<T> values = topology_values_in<T>(topology, layout, config);
+  const JointGeometry<T> geo = values.geometry();
+  const Linkage& g = topology.linkage;
+  std::optional<MechanismSolution<T>> solution;
+  try {
+    solution = solve_mechanism<T>(
+        g, topology.inputs, rigid_body_constraint_matrix<T>(g, geo),
+        [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, geo); }, name,
+        &values.inputs, geo);
+  } catch (const InputError&) {
+    return std::nullopt;
+  } catch (const cln::floating_point_exception&) {
+    return std::nullopt;
+  }
+  // The sampled axes are exactly unit vectors (Pythagorean directions).
+  const MechanismFrameOf<T> frame(topology, solution->motion, values.joint_at, values.point_at, values.axis, true);
+  std::optional<MechanismSolution<Rational>> exact;
+  std::optional<MechanismScene> s;
+  std::vector<Verdict> out(claims.size(), Verdict::Holds);
+  for (size_t k = 0; k < claims.size(); ++k) {
+    if (done[k]) continue;
+    const auto t0 = Clock::now();
+    SampleResult& r = results[k];
+    if constexpr (ScalarTraits<T>::is_exact) {
+      out[k] = quick_verdict(claims[k], frame, &r.undefined_quantity, &r.undefined_reason);
+    } else {
+      out[k] = floating_verdict(claims[k], frame, r);
+      if (out[k] == Verdict::Fails) {
+        if (!s) s = build_scene(topology, layout, config, name);
+        if (!exact) exact = solve(*s);
+        LINKPROOF_ASSERT(exact.has_value(), "a floating failure on a configuration that is singular exactly");
+        const MechanismFrame exact_frame(*s, exact->motion);
+        LINKPROOF_ASSERT(quick_verdict(claims[k], exact_frame, nullptr, nullptr) == Verdict::Fails,
+                         "a floating failure the exact sides do not confirm");
+      }
+    }
+    seconds[k] += std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  return out;
 }
 
 bool still_fails(const MechanismDataClaim& claim, const MechanismScene& s) {
@@ -186,13 +270,14 @@ std::string to_string(TopologyVerdict v) {
     case TopologyVerdict::HoldsOnSamples: return "holds_on_samples";
     case TopologyVerdict::Disproved: return "disproved";
     case TopologyVerdict::Undefined: return "undefined";
+    case TopologyVerdict::Inconclusive: return "inconclusive";
   }
   return "?";
 }
 
 bool SampleResult::is_as_expected() const {
   if (info.expected == Expectation::Fails) return verdict == TopologyVerdict::Disproved;
-  return verdict != TopologyVerdict::Disproved;
+  return verdict == TopologyVerdict::HoldsOnSamples;
 }
 
 MechanismScene random_topology_configuration(const MechanismScene& scene, std::uint64_t seed, int index,
@@ -224,24 +309,25 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
     for (size_t k = 0; k < claims.size(); ++k) any_open = any_open || !done[k];
     if (!any_open) break;
     const Config config = random_config(scene, layout, o.seed, i, o.coordinate_range);
-    const MechanismScene s = build_scene(scene, layout, config, fmt::format("{}-sample-{}", scene.name, i));
+    const std::string name = fmt::format("{}-sample-{}", scene.name, i);
     ++run.generated;
-    const auto solution = solve(s);
-    if (!solution) {
+    const std::optional<std::vector<Verdict>> verdicts = with_scalar_type(o.arithmetic, [&]<class T>() {
+      return configuration_verdicts<T>(scene, layout, config, name, claims, done, run.claims, claim_seconds);
+    });
+    if (!verdicts) {
       ++run.singular;
       continue;
     }
     ++run.solved;
-    const MechanismFrame frame(s, solution->motion);
     for (size_t k = 0; k < claims.size(); ++k) {
       if (done[k]) continue;
-      const auto t0 = Clock::now();
       SampleResult& r = run.claims[k];
-      switch (quick_verdict(claims[k], frame, &r.undefined_quantity, &r.undefined_reason)) {
+      switch ((*verdicts)[k]) {
         case Verdict::Holds: done[k] = ++r.compared >= o.count; break;
         case Verdict::Undefined: ++r.undefined; break;
+        case Verdict::Inconclusive: ++r.inconclusive; break;
         default:
-          if (!is_readable(s)) {  // a degenerate configuration: no replayable counterexample
+          if (!is_readable(build_scene(scene, layout, config, name))) {  // degenerate: no replayable counterexample
             ++run.degenerate;
             break;
           }
@@ -249,7 +335,6 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
           failures[k] = {i, config};
           break;
       }
-      claim_seconds[k] += std::chrono::duration<double>(Clock::now() - t0).count();
     }
   }
   for (size_t k = 0; k < claims.size(); ++k) {
@@ -259,7 +344,9 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
       r.verdict = TopologyVerdict::Disproved;
       r.counterexample = shrink(claims[k], scene, layout, f->second.second, f->second.first, o);
     } else {
-      r.verdict = r.compared > 0 ? TopologyVerdict::HoldsOnSamples : TopologyVerdict::Undefined;
+      r.verdict = r.compared > 0                          ? TopologyVerdict::HoldsOnSamples
+                  : r.undefined == 0 && r.inconclusive > 0 ? TopologyVerdict::Inconclusive
+                                                           : TopologyVerdict::Undefined;
     }
     r.seconds = claim_seconds[k] + std::chrono::duration<double>(Clock::now() - t0).count();
   }

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "linkproof/mechanism/mechanism_scene.h"
+#include "mechanism/joint_geometry.h"
+#include "mechanism/mechanism_solve.h"
 
 namespace linkproof {
 
@@ -32,5 +34,31 @@ struct TopologyValues {
 /// The scene of `topology` at these values, named `name` (source `name`.yaml).
 MechanismScene topology_configuration(const MechanismScene& topology, const TopologyLayout& layout,
                                       const TopologyValues& values, const std::string& name);
+
+/// The same values in a scalar type T, where the kinematics read them (a JointGeometry and the
+/// inputs' rates): a configuration solved and judged without building its scene.
+template <class T>
+struct TopologyValuesIn {
+  std::vector<Vec2<T>> joint_at, point_at, axis;  ///< per joint, per tracer point, per joint
+  std::vector<InputValue<T>> inputs;
+  JointGeometry<T> geometry() const { return {&joint_at, &axis}; }
+};
+
+template <class T>
+TopologyValuesIn<T> topology_values_in(const MechanismScene& topology, const TopologyLayout& layout,
+                                       const TopologyValues& c) {
+  std::vector<Vec2<T>> groups;
+  for (const Vec2<Rational>& p : c.positions) groups.push_back(vec_from_rational<T>(p));
+  TopologyValuesIn<T> out;
+  for (size_t j = 0; j < layout.joint_group.size(); ++j) {
+    out.joint_at.push_back(groups[static_cast<size_t>(layout.joint_group[j])]);
+    out.axis.push_back(topology.linkage.joint(static_cast<int>(j)).type == JointType::Prismatic
+                           ? vec_from_rational<T>(c.axes[j])
+                           : Vec2<T>{from_int<T>(0), from_int<T>(0)});
+  }
+  for (const int g : layout.point_group) out.point_at.push_back(groups[static_cast<size_t>(g)]);
+  for (size_t k = 0; k < c.rate.size(); ++k) out.inputs.push_back({from_rational<T>(c.rate[k]), from_rational<T>(c.rate_dot[k])});
+  return out;
+}
 
 }  // namespace linkproof

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "report/comparison_text.h"
 #include "report/json_report.h"
 #include "report/number_text.h"
 
@@ -10,29 +11,46 @@ namespace linkproof {
 
 namespace {
 
+bool is_exact(const TopologySampleRun& run) { return run.options.arithmetic == Arithmetic::Exact; }
+
 std::string rests_on(const TopologySampleRun& run) {
-  return fmt::format("exact evaluation on random configurations of the topology of {} (seed {}; small-integer "
+  return fmt::format("{} on random configurations of the topology of {} (seed {}; small-integer "
                      "positions, rational unit axes, rational input rates); holds_on_samples is NOT a proof for "
                      "every configuration",
+                     is_exact(run) ? std::string("exact evaluation")
+                                   : fmt::format("evaluation in {} with derived error bounds (a failure confirmed "
+                                                 "exactly)",
+                                                 to_string(run.options.arithmetic)),
                      run.topology, run.options.seed);
+}
+
+std::string inconclusive_note(const SampleResult& r) {
+  if (r.inconclusive == 0) return "";
+  return fmt::format("; {} inconclusive, the first at {}: {}", r.inconclusive, r.first_inconclusive->label,
+                     reason_text(*r.first_inconclusive));
 }
 
 std::string scope(const SampleResult& r, const TopologySampleRun& run) {
   switch (r.verdict) {
     case TopologyVerdict::HoldsOnSamples:
-      return fmt::format("exactly equal on {} random configuration{}{} ({} undefined); not a proof", r.compared,
-                         r.compared == 1 ? "" : "s",
+      return fmt::format("{} on {} random configuration{}{} ({} undefined{}); not a proof",
+                         is_exact(run) ? std::string("exactly equal")
+                                       : fmt::format("equal within the derived error bound in {}",
+                                                     to_string(run.options.arithmetic)),
+                         r.compared, r.compared == 1 ? "" : "s",
                          r.compared < run.options.count ? fmt::format(" (fewer than the {} asked: the {} attempts ran out)",
                                                                       run.options.count, run.generated)
                                                         : "",
-                         r.undefined);
+                         r.undefined, inconclusive_note(r));
     case TopologyVerdict::Disproved:
       return fmt::format("the sides differ on random configuration {} (compared equal on {} before); shrunk in {} "
                          "steps",
                          r.counterexample->configuration, r.compared, r.counterexample->shrink_steps);
+    case TopologyVerdict::Inconclusive:
+      return fmt::format("no comparison decided on the {} configurations solved{}", run.solved, inconclusive_note(r));
     case TopologyVerdict::Undefined:
-      return fmt::format("undefined on every one of the {} configurations solved: {} ({})", r.undefined,
-                         r.undefined_quantity, r.undefined_reason);
+      return fmt::format("undefined on every one of the {} configurations solved: {} ({}){}", r.undefined,
+                         r.undefined_quantity, r.undefined_reason, inconclusive_note(r));
   }
   return "";
 }
@@ -80,6 +98,7 @@ nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status)
               {"scope", scope(r, run)},
               {"compared", r.compared},
               {"undefined_configurations", r.undefined},
+              {"inconclusive_configurations", r.inconclusive},
               {"undefined", r.undefined_quantity.empty()
                                 ? json(nullptr)
                                 : json{{"quantity", r.undefined_quantity}, {"reason", r.undefined_reason}}},
@@ -92,6 +111,7 @@ nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status)
           {"topology", run.topology},
           {"seed", run.options.seed},
           {"count", run.options.count},
+          {"arithmetic", std::string(to_string(run.options.arithmetic))},
           {"configurations", {{"generated", run.generated}, {"singular_skipped", run.singular}, {"solved", run.solved},
                               {"degenerate_failures_skipped", run.degenerate}}},
           {"rests_on", rests_on(run)},
@@ -107,9 +127,12 @@ void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsSta
   for (const bool b : status.as_expected) ok += b;
   fmt::print(out, "{} claim(s) on random configurations of the topology of {}: {} as expected, {} not\n",
              run.claims.size(), run.topology, ok, static_cast<int>(run.claims.size()) - ok);
-  fmt::print(out, "configurations: {} drawn, {} skipped (singular velocity system), {} solved; seed {}, count {}; "
-                  "{:.3f} s\n",
-             run.generated, run.singular, run.solved, run.options.seed, run.options.count, run.seconds);
+  fmt::print(out, "configurations: {} drawn, {} skipped (singular velocity system{}), {} solved; seed {}, count {}; "
+                  "{}{:.3f} s\n",
+             run.generated, run.singular, is_exact(run) ? "" : " or undecided in floating point", run.solved,
+             run.options.seed, run.options.count,
+             is_exact(run) ? std::string() : fmt::format("arithmetic {}; ", to_string(run.options.arithmetic)),
+             run.seconds);
   if (run.degenerate > 0)
     fmt::print(out, "{} failure(s) skipped on degenerate configurations the scene reader refuses\n", run.degenerate);
   fmt::print(out, "rests on: {}\n\n", rests_on(run));
