@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "claims/expression_scanner.h"
 #include "claims/vocabulary.h"
 #include "linkproof/core/error.h"
 
@@ -52,7 +53,6 @@ namespace linkproof {
 namespace {
 
 // Limits stated in docs/limits.md; each refusal names file:line:column.
-constexpr std::size_t kMaxExpressionCharacters = 20000;
 constexpr int kMaxExpressionNesting = 100;  // GiNaC's parser recurses per bracket and per sign
 constexpr int kMaxUnarySigns = 8;
 constexpr int kMaxExponent = 64;
@@ -104,13 +104,8 @@ const AtomTable& atoms() {
 
 // --- The scanner ------------------------------------------------------------------------------
 
-enum class Tok { Name, Number, Op, Open, Close, Comma, End };
-
-struct Token {
-  Tok kind;
-  std::string text;
-  size_t offset;
-};
+using Tok = TokenKind;
+using Token = ExpressionToken;
 
 class Scanner {
  public:
@@ -164,46 +159,11 @@ class Scanner {
   }
 
   void tokenize() {
-    if (text_.size() > kMaxExpressionCharacters)
-      fail(0, "the expression has " + std::to_string(text_.size()) + " characters; the limit is " +
-                  std::to_string(kMaxExpressionCharacters) + " (docs/limits.md)");
-    size_t i = 0;
-    while (i < text_.size()) {
-      const char ch = text_[i];
-      if (std::isspace(static_cast<unsigned char>(ch))) { ++i; continue; }
-      const size_t start = i;
-      if (std::isalpha(static_cast<unsigned char>(ch)) || ch == '_') {
-        while (i < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i])) || text_[i] == '_')) ++i;
-        tokens_.push_back({Tok::Name, text_.substr(start, i - start), start});
-      } else if (std::isdigit(static_cast<unsigned char>(ch))) {
-        while (i < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i]))) ++i;
-        if (i < text_.size() && (text_[i] == '.' || text_[i] == 'e' || text_[i] == 'E')) {
-          // The whole number as written (0.5, 1e-3, 2.5E+4), for the message.
-          size_t end = i + 1;
-          while (end < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[end])) ||
-                                        text_[end] == '.' || text_[end] == 'e' || text_[end] == 'E' ||
-                                        ((text_[end] == '-' || text_[end] == '+') &&
-                                         (text_[end - 1] == 'e' || text_[end - 1] == 'E'))))
-            ++end;
-          fail(start, "'" + text_.substr(start, end - start) +
-                          "' is a decimal number, which GiNaC reads as a float: claims are exact, write a fraction such as 1/2");
-        }
-        tokens_.push_back({Tok::Number, text_.substr(start, i - start), start});
-      } else if (std::string("+-*/^").find(ch) != std::string::npos) {
-        tokens_.push_back({Tok::Op, std::string(1, ch), i++});
-      } else if (ch == '(' || ch == '[') {
-        tokens_.push_back({Tok::Open, std::string(1, ch), i++});
-      } else if (ch == ')' || ch == ']') {
-        tokens_.push_back({Tok::Close, std::string(1, ch), i++});
-      } else if (ch == ',') {
-        tokens_.push_back({Tok::Comma, ",", i++});
-      } else {
-        const auto byte = static_cast<unsigned char>(ch);
-        fail(i, byte < 0x20 || byte >= 0x7f ? fmt::format("unexpected byte 0x{:02x}", byte)
-                                            : std::string("unexpected character '") + ch + "'");
-      }
+    try {
+      tokens_ = scan_expression(text_, ScanRules{.quoted_names = false, .square_brackets = true});
+    } catch (const ScanError& e) {
+      fail(e.offset, e.problem);
     }
-    tokens_.push_back({Tok::End, "end of expression", text_.size()});
   }
 
   // expression := ['+'|'-']* operand ('^' exponent)* (op ['+'|'-']* operand ('^' exponent)*)*

@@ -4,25 +4,20 @@
 
 #include <cctype>
 
+#include "claims/expression_scanner.h"
 #include "linkproof/core/error.h"
 
 namespace linkproof {
 
 namespace {
 
-// The limits of the polygon language (docs/limits.md).
-constexpr std::size_t kMaxCharacters = 20000;
+// The limits of the mechanism language, as of the polygon one (docs/limits.md).
 constexpr int kMaxNesting = 100;
 constexpr int kMaxExponent = 64;
 constexpr std::size_t kMaxIntegerDigits = 200;
 
-enum class Tok { Name, Quoted, Number, Op, Open, Close, Comma, End };
-
-struct Token {
-  Tok kind;
-  std::string text;
-  size_t offset;
-};
+using Tok = TokenKind;
+using Token = ExpressionToken;
 
 bool is_value(MechanismKind k) { return k == MechanismKind::Number || k == MechanismKind::Vector; }
 
@@ -57,47 +52,11 @@ class Parser {
   }
 
   void tokenize() {
-    if (text_.size() > kMaxCharacters)
-      fail(0, fmt::format("the expression has {} characters; the limit is {} (docs/limits.md)", text_.size(),
-                          kMaxCharacters));
-    size_t i = 0;
-    while (i < text_.size()) {
-      const char ch = text_[i];
-      if (std::isspace(static_cast<unsigned char>(ch))) { ++i; continue; }
-      const size_t start = i;
-      if (std::isalpha(static_cast<unsigned char>(ch)) || ch == '_') {
-        while (i < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i])) || text_[i] == '_')) ++i;
-        tokens_.push_back({Tok::Name, text_.substr(start, i - start), start});
-      } else if (ch == '"' || ch == '\'') {
-        const size_t close = text_.find(ch, i + 1);
-        if (close == std::string::npos) fail(start, fmt::format("this {} is never closed", ch));
-        if (close == i + 1) fail(start, "an empty quoted name");
-        tokens_.push_back({Tok::Quoted, text_.substr(i + 1, close - i - 1), start});
-        i = close + 1;
-      } else if (std::isdigit(static_cast<unsigned char>(ch))) {
-        while (i < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i]))) ++i;
-        if (i < text_.size() && (text_[i] == '.' || text_[i] == 'e' || text_[i] == 'E'))
-          fail(start, "'" + text_.substr(start, i + 1 - start) +
-                          "...' is a decimal number: claims are exact, write a fraction such as 1/2");
-        if (i - start > kMaxIntegerDigits)
-          fail(start, fmt::format("an integer of {} digits; the limit is {} (docs/limits.md)", i - start,
-                                  kMaxIntegerDigits));
-        tokens_.push_back({Tok::Number, text_.substr(start, i - start), start});
-      } else if (std::string("+-*/^").find(ch) != std::string::npos) {
-        tokens_.push_back({Tok::Op, std::string(1, ch), i++});
-      } else if (ch == '(') {
-        tokens_.push_back({Tok::Open, "(", i++});
-      } else if (ch == ')') {
-        tokens_.push_back({Tok::Close, ")", i++});
-      } else if (ch == ',') {
-        tokens_.push_back({Tok::Comma, ",", i++});
-      } else {
-        const auto byte = static_cast<unsigned char>(ch);
-        fail(i, byte < 0x20 || byte >= 0x7f ? fmt::format("unexpected byte 0x{:02x}", byte)
-                                            : std::string("unexpected character '") + ch + "'");
-      }
+    try {
+      tokens_ = scan_expression(text_, ScanRules{.quoted_names = true, .max_integer_digits = kMaxIntegerDigits});
+    } catch (const ScanError& e) {
+      fail(e.offset, e.problem);
     }
-    tokens_.push_back({Tok::End, "end of expression", text_.size()});
   }
 
   bool at_op(const char* op) const { return tokens_[i_].kind == Tok::Op && tokens_[i_].text == op; }
