@@ -104,6 +104,12 @@ DimensionedBound compute_dimensioned_bound(const MechanismScene& s, const Starti
   for (size_t k = 0; k < s.inputs.size(); ++k)
     values.push_back({widened(s.inputs[k].rate, radii.input[k].first), widened(s.inputs[k].rate_dot, radii.input[k].second)});
   const JointGeometry<T> geo{&at, &axis};
+  // Nothing is bounded: every summary bound +inf (the per-quantity lists stay empty).
+  const auto unbounded = [&](std::string reason) {
+    out.reason = std::move(reason);
+    out.omega = out.omega_dot = out.v = out.a = out.sliding_v = out.sliding_a = kUnbounded;
+    return out;
+  };
   MechanismSolution<T> sol;
   try {
     sol = solve_mechanism<T>(
@@ -111,12 +117,10 @@ DimensionedBound compute_dimensioned_bound(const MechanismScene& s, const Starti
         [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, geo); }, s.source, &values,
         geo);
   } catch (const InputError& e) {
-    out.reason = "the solve over every configuration within the rationalisation bounds failed (" + e.problem() +
-                 "): some of them may be singular";
-    return out;
+    return unbounded("the solve over every configuration within the rationalisation bounds failed (" + e.problem() +
+                     "): some of them may be singular, e.g. at a dead centre");
   } catch (const cln::floating_point_exception& e) {
-    out.reason = std::string("the bounding solve left the range of its arithmetic (") + e.what() + ")";
-    return out;
+    return unbounded(std::string("the bounding solve left the range of its arithmetic (") + e.what() + ")");
   }
   const MechanismMotion<T>& m = sol.motion;
   // The first quantity without a bound names the reason.

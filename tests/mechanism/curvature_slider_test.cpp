@@ -77,17 +77,19 @@ TEST(CurvatureOnSliders, BobillierAcrossTheSlideItselfIsUndefinedNamingTheTransl
   EXPECT_NE(u.reason.find("joint A (it is the requested point)"), std::string::npos) << u.reason;
 }
 
-// A slider-crank with a tracer C on the rod, C in rod/frame: the pairs are A (centre O2) and the
-// slider's pin B, whose path is the straight guide: its centre is at infinity along the normal.
+// An offset slider-crank with a tracer C on the rod, C in rod/frame: the pairs are A (centre O2)
+// and the slider's pin B, whose path is the straight guide: its centre is at infinity along the
+// normal. (In-line with |O2 B| = 2 x_A the collineation axis is perpendicular to PB and the
+// mirrored step (c) coincides: not a test of it.)
 TEST(CurvatureOnSliders, BobillierWithACentreAtInfinityGivesTheAnalyticCentre) {
   const char* scene =
       "name: slider-crank-curvature\nmechanism:\n  ground: frame\n  links: [frame, crank, rod, slider]\n  joints:\n"
       "    - {name: O2, type: revolute,  links: [frame, crank], at: [0, 0]}\n"
       "    - {name: A,  type: revolute,  links: [crank, rod],   at: [3, 4]}\n"
-      "    - {name: B,  type: revolute,  links: [rod, slider],  at: [6, 0]}\n"
-      "    - {name: D,  type: prismatic, links: [frame, slider], at: [6, 0], axis: [1, 0]}\n"
+      "    - {name: B,  type: revolute,  links: [rod, slider],  at: [15, -1]}\n"
+      "    - {name: D,  type: prismatic, links: [frame, slider], at: [15, -1], axis: [1, 0]}\n"
       "  inputs:\n    - {link: crank, omega: 2, omega_dot: 1}\n"
-      "  points: [{name: C, link: rod, at: [5, 3]}]\n"
+      "  points: [{name: C, link: rod, at: [8, 2]}]\n"
       "curvature:\n  - {point: C, moving: rod, fixed: frame}\n";
   const CurvatureCheck c = check_curvature(parse_mechanism_scene(scene, "sc.yaml"), {});
   EXPECT_EQ(claim(c, "curvature.bobillier").verdict, Verdict::Holds);

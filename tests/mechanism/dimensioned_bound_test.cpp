@@ -19,6 +19,7 @@
 #include "mechanism/dimensioned_bound.h"
 #include "mechanism/dimensioned_closed_forms.h"
 #include "mechanism/mechanism_test_support.h"
+#include "exit_status.h"
 #include "report/claims_status.h"
 #include "report/mechanism_report.h"
 
@@ -175,7 +176,7 @@ mechanism:
   EXPECT_FALSE(c.dimensioned->bounded);
   EXPECT_FALSE(c.dimensioned->reason.empty());
   EXPECT_TRUE(std::isinf(c.dimensioned->omega)) << c.dimensioned->omega;
-  const nlohmann::json j = to_json(c, ClaimsStatus{});
+  const nlohmann::json j = to_json(c, cli::claims_status(c.claims));
   EXPECT_EQ(j["dimensioned_bound"]["bounded"], false);
   EXPECT_TRUE(j["dimensioned_bound"]["reason"].is_string());
 }
@@ -184,10 +185,10 @@ mechanism:
 // unchanged; an exact scene has no such key.
 TEST(DimensionedBound, JsonAddsOneKeyAndChangesNoOther) {
   const FourBar f;
-  const nlohmann::json with = to_json(f.check, ClaimsStatus{});
+  const nlohmann::json with = to_json(f.check, cli::claims_status(f.check.claims));
   MechanismCheck plain = f.check;
   plain.dimensioned.reset();
-  nlohmann::json without = to_json(plain, ClaimsStatus{});
+  nlohmann::json without = to_json(plain, cli::claims_status(plain.claims));
   ASSERT_TRUE(with.contains("dimensioned_bound"));
   EXPECT_FALSE(without.contains("dimensioned_bound"));
   nlohmann::json stripped = with;
@@ -205,7 +206,7 @@ TEST(DimensionedBound, JsonAddsOneKeyAndChangesNoOther) {
   const MechanismScene exact = load_mechanism_scene(testing::mechanism_scene_path("seed001_fourbar.yaml"));
   const MechanismCheck e = check_mechanism(exact, Arithmetic::Exact);
   EXPECT_FALSE(e.dimensioned.has_value());
-  EXPECT_FALSE(to_json(e, ClaimsStatus{}).contains("dimensioned_bound"));
+  EXPECT_FALSE(to_json(e, cli::claims_status(e.claims)).contains("dimensioned_bound"));
 }
 
 }  // namespace

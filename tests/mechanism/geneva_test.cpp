@@ -25,6 +25,7 @@
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/mechanism/mechanism_check.h"
 #include "mechanism/mechanism_test_support.h"
+#include "exit_status.h"
 #include "report/claims_status.h"
 #include "report/mechanism_report.h"
 
@@ -190,7 +191,7 @@ TEST(SlotJoint, CheckTextShowsTheSlotAsOneJointWithoutItsBlockRow) {
   EXPECT_EQ(c.slots[0].block, "P.block");
   EXPECT_EQ(c.slots[0].pin_link, "crank");
   std::ostringstream out;
-  write_text(out, c, ClaimsStatus{});
+  write_text(out, c, cli::claims_status(c.claims));
   const std::string text = out.str();
   EXPECT_TRUE(lines_starting(text, "P.block ").empty()) << text;
   EXPECT_TRUE(lines_starting(text, "P.pin ").empty()) << text;
@@ -202,7 +203,7 @@ TEST(SlotJoint, CheckTextShowsTheSlotAsOneJointWithoutItsBlockRow) {
   EXPECT_NE(text.find("sliding a "), std::string::npos);
   EXPECT_NE(text.find("Coriolis  ("), std::string::npos);
   EXPECT_FALSE(lines_starting(text, "wheel ").empty());
-  const nlohmann::json j = to_json(c, ClaimsStatus{});
+  const nlohmann::json j = to_json(c, cli::claims_status(c.claims));
   EXPECT_TRUE(j["links"].contains("P.block"));  // existing keys stay
   EXPECT_TRUE(j["joints"].contains("P.pin"));
   EXPECT_EQ(j["slots"]["P"]["slotted"], "wheel");
