@@ -346,9 +346,7 @@ Drawing mechanism_drawing(const MechanismScene& scene) {
     }
     // A slot's pin joint P.pin lies on the slot P with its block P.block (io/mechanism_scene.h,
     // which refuses those names otherwise): the slot is drawn as P alone.
-    if (const std::string slot = j.name.size() > 4 && j.name.ends_with(".pin") ? j.name.substr(0, j.name.size() - 4) : "";
-        !slot.empty() && g.find_joint(slot) && g.find_link(slot + ".block"))
-      continue;
+    if (is_slot_pin_joint(g, j.name)) continue;
     const bool grounded = j.links[0] == g.ground() || j.links[1] == g.ground();
     d.markers.push_back({p, j.name, grounded ? "#000000" : "#333333", true, false});
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "report/dimensioned_bound_report.h"
+#include "report/slot_rows.h"
 
 namespace linkproof {
 
@@ -99,6 +100,7 @@ void write_scene_placement_text(std::ostream& out, const MechanismScene& scene, 
     fmt::print(out, "positions from dimensions: every position and rate is exact (rational)\n");
   fmt::print(out, "{:<16} {:<20} {}\n", "joint", "given by", "position used");
   for (const GivenValue& v : p.joints) {
+    if (is_slot_pin_joint(scene.linkage, v.subject)) continue;  // at its slot's point, placed with it
     fmt::print(out, "{:<16} {:<20} {}\n", v.subject, v.given_by,
                v.exact ? "exact" : "rationalised, within " + format_bound(v.bound));
   }

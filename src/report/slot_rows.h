@@ -23,6 +23,14 @@ inline bool is_hidden_slot_part(const MechanismCheck& c, const std::string& name
   return std::any_of(c.slots.begin(), c.slots.end(), [&](const auto& s) { return s.block == name || s.pin == name; });
 }
 
+/// True for joint `name` of `g` that is a slot's pin P.pin (a joint P and a link P.block exist;
+/// io/mechanism_scene.h refuses those names otherwise): for reports made from the scene alone.
+inline bool is_slot_pin_joint(const Linkage& g, const std::string& name) {
+  if (name.size() <= 4 || !name.ends_with(".pin")) return false;
+  const std::string slot = name.substr(0, name.size() - 4);
+  return g.find_joint(slot).has_value() && g.find_link(slot + ".block").has_value();
+}
+
 /// "pin of crank in a slot of wheel".
 inline std::string slot_description(const MechanismCheck::Slot& s) {
   return "pin of " + s.pin_link + " in a slot of " + s.slotted;

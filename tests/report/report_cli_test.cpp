@@ -161,6 +161,12 @@ TEST(ReportCli, GenevaReportShowsTheSlotAsOneJointWithoutItsBlockLink) {
   const std::string html = slurp(dir.path / "geneva.html");
   EXPECT_NE(html.find("<td>wheel</td>"), std::string::npos);
   EXPECT_NE(html.find("<td>P (pin of crank in a slot of wheel)</td>"), std::string::npos);
+  // check's text: the placement table has the slot P and no row for its pin.
+  const CliRun check = run_cli({"check", source("verify/scenes/mechanisms/geneva.yaml")});
+  ASSERT_EQ(check.code, 0) << check.err;
+  EXPECT_EQ(check.out.find("\nP.pin "), std::string::npos) << check.out;
+  EXPECT_EQ(check.out.find("\nP.block "), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("\nP                polar"), std::string::npos) << check.out;
   // The rationalised scene's distance to the dimensioned values is said beside the statement.
   EXPECT_NE(r.err.find("distance to the dimensioned values: omega <= "), std::string::npos) << r.err;
 }
