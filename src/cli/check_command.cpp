@@ -48,7 +48,7 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
       j.update(scene_placement_json(scene));
       out << json_text(j) << "\n";
     } else {
-      write_scene_placement_text(out, scene);
+      write_scene_placement_text(out, scene, check.dimensioned ? &*check.dimensioned : nullptr);
       write_text(out, check, status, a.digits.value_or(kReadableDigits));
     }
     return status.exit_status;
@@ -65,7 +65,7 @@ int run_mechanism_check(const CheckArgs& a, const std::string& text, std::ostrea
     j.update(scene_placement_json(scene));
     out << j.dump(2) << "\n";
   } else {
-    write_scene_placement_text(out, scene);
+    write_scene_placement_text(out, scene, check.dimensioned ? &*check.dimensioned : nullptr);
     write_text(out, check, status, a.digits.value_or(kReadableDigits));
     write_curvature_text(out, *second.analysis, second.link_names);
   }

@@ -18,6 +18,7 @@
 #include "check/check_polygon.h"
 #include "io/claim_file.h"
 #include "linkproof/io/mechanism_scene.h"
+#include "report/dimensioned_bound_report.h"
 #include "report/scene_placement_report.h"
 #include "linkproof/io/scene.h"
 #include "report/atomic_file.h"
@@ -117,6 +118,7 @@ int report_mechanism(const ReportArgs& a, const std::string& text, std::ostream&
   if (const std::string note = rationalised_statement(scene); !note.empty())
     err << "linkproof: note: " << a.input << ": " << note << " (docs/mechanisms.md)\n";
   const MechanismCheck check = check_mechanism(scene, catalogues::mechanism_catalogues(scene), Arithmetic::Exact);
+  if (check.dimensioned) err << "linkproof: note: " << a.input << ": " << dimensioned_bound_summary(*check.dimensioned) << "\n";
   report::Document d = report::build_mechanism_document(scene, check, {a.plans, text});
   d.reproduce = reproduce_of(a, "none (deterministic)");
   report::add_reproduce_section(d);

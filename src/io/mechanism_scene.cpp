@@ -395,6 +395,7 @@ class MechanismReader {
       const auto it = std::find_if(out.begin(), out.end(), [&](const LinkageJoint& o) { return o.name == from; });
       if (it == out.end()) fail(f + ".from", "unknown joint " + backticked(from));
       out[i].axis = out[i].at - it->at;
+      placement.axes_from.push_back({out[i].name, from});
       if (is_zero_vector(out[i].axis))
         fail(f, fmt::format("zero axis: joint {} is at the joint {} itself ({}, {}), so it gives no direction",
                             backticked(from), backticked(out[i].name), format_rational(it->at.x), format_rational(it->at.y)));

@@ -13,22 +13,52 @@ namespace {
 // are two (a four-bar: independent of the analytic route), else from the analytic centres of two
 // joints of m.
 struct BobillierPairs {
-  Vec2<Rational> A, alpha, B, beta;
+  PlanePoint<Rational> A, alpha, B, beta;  ///< finite, or at infinity (docs/mechanisms.md, "Bobillier with sliders")
   std::string from;
 };
 
+using PPR = PlanePoint<Rational>;
+
+// The pair a prismatic joint j gives for the motion m/f (docs/mechanisms.md, "Bobillier with
+// sliders"): its relative pole P_mk (k the joint's other link) is the point at infinity in the
+// direction n = J u. It belongs to m and k alike and, as m and k keep one orientation, moves as a
+// point of k: its centre in f is the point of k/f's return circle (the centres of the points at
+// infinity: diameter from P_kf to P_kf - a_P / omega^2) on the line through P_kf along n,
+//   beta = P_kf + (n . D / |n|^2) n,   D = -a_P / omega_kf^2.
+// A guide pinned to f (a rocker) has a_P = 0: beta is its pivot. nullopt with `why` when k/f has
+// no finite pole or does not turn.
+std::optional<std::pair<PPR, PPR>> prismatic_pair(const Linkage& g, const std::vector<LinkField<Rational>>& fields,
+                                                   const LinkageJoint& j, int m, int f, std::string& why) {
+  const int k = j.links[0] == m ? j.links[1] : j.links[0];
+  if (k == f) {
+    why = "its links are the two of the motion: a relative translation";
+    return std::nullopt;
+  }
+  const InflectionCircle<Rational> c = construct_inflection_circle(
+      fields[static_cast<size_t>(k)], fields[static_cast<size_t>(f)], fmt::format("P_{},{}", g.link_name(k), g.link_name(f)));
+  if (!c.pole.is_finite() || cln::zerop(c.omega)) {
+    why = fmt::format("{}/{} has no finite pole: the centre of the point at infinity of the slide is not defined",
+                      g.link_name(k), g.link_name(f));
+    return std::nullopt;
+  }
+  const Vec2<Rational> n = perp(j.axis), D = (Rational(-1) / (c.omega * c.omega)) * c.a_pole;
+  return std::pair{PPR::infinite(n), PPR::finite(c.pole.at + (dot(n, D) / norm2(n)) * n)};
+}
+
 // The pairs, or (nullopt) with `why` saying what was found and what could not be used: a joint
-// that is the requested point, a centre at infinity or undefined, a prismatic pair (its pole
-// is at infinity: no finite point and centre).
+// that is the requested point, an undefined centre, a prismatic pair between the two links of the
+// motion (a relative translation) or whose other link has no finite pole relative to f. A centre
+// at infinity and a prismatic pair's pole at infinity are pairs (docs/mechanisms.md, "Bobillier
+// with sliders").
 std::optional<BobillierPairs> bobillier_pairs(const Linkage& g, const std::vector<LinkField<Rational>>& fields,
                                               const CurvatureRequest& r, std::string& why) {
-  std::vector<std::pair<Vec2<Rational>, Vec2<Rational>>> pairs;
+  std::vector<std::pair<PPR, PPR>> pairs;
   std::vector<std::string> names;
   for (int b = 0; b < g.link_count() && pairs.size() < 2; ++b) {
     if (b == r.moving || b == r.fixed || !bar_problem(g, r.moving, b).empty()) continue;
     const BarEnds e = bar_ends(g, r.moving, b);
     if (e.far_link != r.fixed) continue;
-    pairs.emplace_back(g.joint(e.near_joint).at, g.joint(e.far_joint).at);
+    pairs.emplace_back(PPR::finite(g.joint(e.near_joint).at), PPR::finite(g.joint(e.far_joint).at));
     names.push_back(g.link_name(b));
   }
   if (pairs.size() == 2)
@@ -45,9 +75,14 @@ std::optional<BobillierPairs> bobillier_pairs(const Linkage& g, const std::vecto
     if (pairs.size() == 2) break;
     if (j.links[0] != r.moving && j.links[1] != r.moving) continue;
     if (j.type == JointType::Prismatic) {
-      unusable.push_back(fmt::format("prismatic joint {} (links {} and {} turn together: their pole is at infinity or "
-                                     "undefined, so it gives no finite point and centre)",
-                                     j.name, g.link_name(j.links[0]), g.link_name(j.links[1])));
+      std::string problem;
+      if (const auto p = prismatic_pair(g, fields, j, r.moving, r.fixed, problem)) {
+        pairs.push_back(*p);
+        names.push_back(j.name + " (its pole at infinity)");
+      } else {
+        unusable.push_back(fmt::format("prismatic joint {} (links {} and {}: {})", j.name, g.link_name(j.links[0]),
+                                       g.link_name(j.links[1]), problem));
+      }
       continue;
     }
     if (is_zero_vector(j.at - r.at)) {
@@ -55,17 +90,17 @@ std::optional<BobillierPairs> bobillier_pairs(const Linkage& g, const std::vecto
       continue;
     }
     const auto c = construct_curvature_centre(j.at, relative_point_motion(fm, ff, j.at), "");
-    if (!c.is_finite()) {
-      unusable.push_back(fmt::format("joint {} (its centre in {} is {})", j.name, motion,
-                                     c.kind == PlanePoint<Rational>::Kind::AtInfinity ? "at infinity" : c.reason));
+    if (c.kind == PPR::Kind::Undefined) {
+      unusable.push_back(fmt::format("joint {} (its centre in {} is {})", j.name, motion, c.reason));
       continue;
     }
-    pairs.emplace_back(j.at, c.at);
-    names.push_back(j.name);
+    // A centre at infinity (a straight path, e.g. a slider's pin) is a pair too, in its direction.
+    pairs.emplace_back(PPR::finite(j.at), c);
+    names.push_back(c.is_finite() ? j.name : j.name + " (its centre at infinity)");
   }
   if (pairs.size() < 2) {
-    why = fmt::format("Bobillier needs two (point, curvature centre) pairs of {} at finite points; bars joining {} and {}: "
-                      "{}; joints of {} with a finite centre: {}{}{}",
+    why = fmt::format("Bobillier needs two (point, curvature centre) pairs of {}; bars joining {} and {}: "
+                      "{}; joints of {} with a centre: {}{}{}",
                       motion, g.link_name(r.moving), g.link_name(r.fixed), bars.empty() ? "none" : fmt::format("{}", fmt::join(bars, ", ")),
                       g.link_name(r.moving), names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", ")),
                       unusable.empty() ? "" : "; not usable: ", fmt::format("{}", fmt::join(unusable, "; ")));

@@ -13,6 +13,7 @@
 
 #include "core/tracked.h"
 #include "mechanism/axis_length.h"
+#include "mechanism/dimensioned_bound.h"
 #include "mechanism/mechanism_vector_route.h"
 #include "mechanism/mechanism_closure.h"
 #include "mechanism/sub_mechanism.h"
@@ -111,6 +112,23 @@ MechanismCheck::Sliding sliding_motion(const Linkage& g, int joint, const Mechan
       (from_int<T>(2) * m.omega[static_cast<size_t>(j.links[0])] * sd) * perp(vec_from_rational<T>(j.axis));
   out.coriolis[0] = result_number(coriolis.x), out.coriolis[1] = result_number(coriolis.y);
   out.coriolis_bound[0] = bound_of(coriolis.x), out.coriolis_bound[1] = bound_of(coriolis.y);
+  return out;
+}
+
+// The slots of `g`: the reader writes a slot P as the prismatic pair P [slotted, P.block] and the
+// revolute pair P.pin [P.block, pin link] (io/mechanism_scene.h), and refuses any other link or
+// joint of those names, so the names and this shape identify a slot.
+std::vector<MechanismCheck::Slot> find_slots(const Linkage& g) {
+  std::vector<MechanismCheck::Slot> out;
+  for (const LinkageJoint& j : g.joints()) {
+    if (j.type != JointType::Prismatic || g.link_name(j.links[1]) != j.name + ".block") continue;
+    const std::optional<int> pin = g.find_joint(j.name + ".pin");
+    if (!pin) continue;
+    const LinkageJoint& p = g.joint(*pin);
+    if (p.type != JointType::Revolute || (p.links[0] != j.links[1] && p.links[1] != j.links[1])) continue;
+    const int pin_link = p.links[0] == j.links[1] ? p.links[1] : p.links[0];
+    out.push_back({j.name, g.link_name(j.links[1]), p.name, g.link_name(j.links[0]), g.link_name(pin_link)});
+  }
   return out;
 }
 
@@ -275,6 +293,7 @@ MechanismCheck check_solved(const MechanismScene& s, const std::vector<Mechanism
   r.loops = static_cast<int>(g.loops().size());
   r.unknowns = g.unknown_count();
   r.link_names = g.link_names();
+  r.slots = find_slots(g);
   const MechanismClosure closure(g);
   const MechanismSolution<Rational> truth = solve_mechanism<Rational>(
       g, s.inputs, closure.constraint_matrix(),
@@ -329,6 +348,9 @@ MechanismCheck check_solved(const MechanismScene& s, const std::vector<Mechanism
       }
     });
   }
+  // Rationalised positions, axes or rates: how far the results may be from those at the
+  // dimensioned values (mechanism/dimensioned_bound.h), whatever the arithmetic.
+  if (s.placement.is_rationalised()) r.dimensioned = compute_dimensioned_bound(s, construct_starting_radii(s));
   const MechanismContext ctx{s, truth};
   for (const MechanismCatalogue* cat : table_catalogues) {
     if (!cat->tables) continue;
@@ -386,6 +408,17 @@ void keep_asked_rows(MechanismCheck& r, const SceneAsk& ask) {
   r.link_names = std::move(names), r.omega = std::move(omega), r.omega_dot = std::move(omega_dot);
   r.omega_bound = std::move(omega_bound), r.omega_dot_bound = std::move(omega_dot_bound);
   r.relative.clear();
+  if (r.dimensioned) {
+    const auto listed = [](const std::vector<std::string>& kept, const std::string& name) {
+      return std::find(kept.begin(), kept.end(), name) != kept.end();
+    };
+    std::erase_if(r.dimensioned->links, [&](const auto& b) { return !listed(r.link_names, b.name); });
+    const auto not_asked = [&](const DimensionedBound::Point& b) {
+      return std::none_of(ask.points.begin(), ask.points.end(), [&](const AskedName& n) { return n.name == b.name; });
+    };
+    std::erase_if(r.dimensioned->joints, not_asked);
+    std::erase_if(r.dimensioned->points, not_asked);
+  }
 }
 
 }  // namespace

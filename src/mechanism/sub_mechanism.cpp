@@ -113,6 +113,9 @@ SubMechanism restrict_mechanism(const MechanismScene& s, std::vector<int> keep_l
     if (q.link >= 0 && q.bars[0] >= 0 && q.bars[1] >= 0) r.joint_joining.push_back(q);
   }
   r.dimension_residual = s.dimension_residual;
+  // Read by name (joints) and by input index (rates, every input is kept): the bound of a
+  // rationalised scene (mechanism/dimensioned_bound.h) needs it on the part solved too.
+  r.placement = s.placement;
   return sub;
 }
 

@@ -10,6 +10,7 @@
 #include "report/number_rich.h"
 #include "report/number_text.h"
 #include "report/polygon_document.h"
+#include "report/slot_rows.h"
 #include "svg_plot.h"
 
 namespace linkproof::report {
@@ -64,9 +65,11 @@ Section summary_section(const MechanismScene& scene, const MechanismCheck& check
   if (check.ask)
     for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
       headline.push_back(link_rates_rich(check.link_names[k], check.omega[k], check.omega_dot[k]));
+  // A slot is one joint to the reader: its block link and pin joint are not counted.
+  const int slots = static_cast<int>(check.slots.size());
+  const int shown_links = scene.linkage.link_count() - slots, shown_joints = scene.linkage.joint_count() - slots;
   headline.push_back(plain(fmt::format("mobility {}: {} links, {} joints, {} independent loop{}", check.mobility,
-                                       scene.linkage.link_count(), scene.linkage.joint_count(), check.loops,
-                                       check.loops == 1 ? "" : "s")));
+                                       shown_links, shown_joints, check.loops, check.loops == 1 ? "" : "s")));
   for (Rich& r : claims_at_a_glance(check.claims)) headline.push_back(std::move(r));
   s.blocks.push_back(headline_block(std::move(headline)));
   int as_expected = 0;
@@ -75,7 +78,7 @@ Section summary_section(const MechanismScene& scene, const MechanismCheck& check
       "Scene {} ({}): {} links, {} joints, {} independent loops; mobility {} (Gruebler {}), velocity-system rank {}, "
       "condition number {:.3g}. The motion is the exact solution of the differentiated loop closures; {} of {} "
       "claims as expected.",
-      scene.name, scene.source, scene.linkage.link_count(), scene.linkage.joint_count(), check.loops, check.mobility,
+      scene.name, scene.source, shown_links, shown_joints, check.loops, check.mobility,
       check.grubler, check.rank, check.condition, as_expected, check.claims.size()))));
   if (check.ask) {
     std::string asked, links;
@@ -147,7 +150,8 @@ Section mechanism_section(const MechanismScene& scene, const MechanismCheck& che
   }
   Table links{{plain("link"), tex("\\omega"), tex("\\dot\\omega")}, {}};
   for (size_t k = 0; k < check.link_names.size() && k < check.omega.size(); ++k)
-    links.rows.push_back(
+    if (!is_hidden_slot_part(check, check.link_names[k]))  // a slot's block turns with the slotted link
+      links.rows.push_back(
         {plain(check.link_names[k] + (check.link_names[k] == scene.linkage.link_name(scene.linkage.ground()) ? " (ground)" : "")),
          number_rich(check.omega[k]), number_rich(check.omega_dot[k])});
   if (!links.rows.empty()) {
@@ -173,15 +177,43 @@ Section mechanism_section(const MechanismScene& scene, const MechanismCheck& che
       slide.push_back(text(", "));
       for (const Span& b : number_rich(*p.slide_dot)) slide.push_back(b);
     }
-    pts.rows.push_back({plain(p.name), pair(p.v[0], p.v[1]), pair(p.a[0], p.a[1]), std::move(slide)});
+    const MechanismCheck::Slot* slot = slot_of_joint(check, p.name);
+    pts.rows.push_back({plain(slot ? p.name + " (" + slot_description(*slot) + ")" : p.name), pair(p.v[0], p.v[1]),
+                        pair(p.a[0], p.a[1]), std::move(slide)});
   };
-  for (const auto& p : check.joints) add(p);
+  for (const auto& p : check.joints)
+    if (!is_hidden_slot_part(check, p.name)) add(p);  // a slot's pin: the slot's own point
   for (const auto& p : check.points) add(p);
   if (!sliding) {  // no prismatic joint: no empty column
     pts.header.pop_back();
     for (auto& row : pts.rows) row.pop_back();
   }
   if (!pts.rows.empty() || !check.ask) s.blocks.push_back(table_block(std::move(pts)));
+  // Each slot as one joint: its sliding rates (above) and its Coriolis term.
+  for (const auto& p : check.joints) {
+    const MechanismCheck::Slot* slot = slot_of_joint(check, p.name);
+    if (!slot || !p.sliding || !p.slide) continue;
+    Rich r = plain(fmt::format("Slot {}: a {} (one joint; solved as a prismatic pair with a block that turns with {}). "
+                               "The pin slides along u = ",
+                               p.name, slot_description(*slot), slot->slotted));
+    for (const Span& x : pair(ResultNumber(p.sliding->axis.x), ResultNumber(p.sliding->axis.y))) r.push_back(x);
+    r.push_back(text(" at "));
+    r.push_back(math("\\dot\\sigma ="));
+    r.push_back(text(" "));
+    for (const Span& x : number_rich(*p.slide)) r.push_back(x);
+    r.push_back(text(", "));
+    r.push_back(math("\\ddot\\sigma ="));
+    r.push_back(text(" "));
+    for (const Span& x : number_rich(*p.slide_dot)) r.push_back(x);
+    r.push_back(text(" per unit of u; its Coriolis acceleration "));
+    r.push_back(math("2\\,\\omega\\,J\\,v_{\\mathrm{rel}}"));
+    r.push_back(text(", with "));
+    r.push_back(math("\\omega"));
+    r.push_back(text(" that of " + slot->slotted + ", is "));
+    for (const Span& x : pair(p.sliding->coriolis[0], p.sliding->coriolis[1])) r.push_back(x);
+    r.push_back(text("."));
+    s.blocks.push_back(paragraph(std::move(r)));
+  }
   return s;
 }
 
@@ -210,6 +242,7 @@ Drawing plan_drawing(const MechanismScene& scene, const MechanismCheck& check, b
   // In the scene's joint order, not the map's name order: the drawing must not depend on how
   // names sort (a renamed joint would otherwise move in the SVG).
   for (const auto& j : check.joints) {
+    if (is_hidden_slot_part(check, j.name)) continue;  // a slot's pin: the image of the slot P
     const Point2 p = image[j.name];
     d.segments.push_back({origin, p, "#555555", Stroke::Solid, true, ""});
     d.markers.push_back({p, j.name, "#222222", false, false});
@@ -311,6 +344,9 @@ Drawing mechanism_drawing(const MechanismScene& scene) {
       d.segments.push_back({{p.x - r * ux, p.y - r * uy}, p, "#555555", Stroke::Dashed, false, ""});
       d.segments.push_back({p, {p.x + r * ux, p.y + r * uy}, "#555555", Stroke::Dashed, false, "guide " + j.name});
     }
+    // A slot's pin joint P.pin lies on the slot P with its block P.block (io/mechanism_scene.h,
+    // which refuses those names otherwise): the slot is drawn as P alone.
+    if (is_slot_pin_joint(g, j.name)) continue;
     const bool grounded = j.links[0] == g.ground() || j.links[1] == g.ground();
     d.markers.push_back({p, j.name, grounded ? "#000000" : "#333333", true, false});
   }

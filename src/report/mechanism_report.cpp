@@ -9,8 +9,10 @@
 
 #include "mechanism/axis_length.h"
 #include "report/comparison_text.h"
+#include "report/dimensioned_bound_report.h"
 #include "report/json_report.h"
 #include "report/number_text.h"
+#include "report/slot_rows.h"
 
 namespace linkproof {
 
@@ -129,7 +131,10 @@ void write_sliding_section(std::ostream& out, const MechanismCheck& c, int digit
     const MechanismCheck::Sliding& s = *p.sliding;
     const std::string length = s.axis_radicand == 1 ? coordinate_text(s.axis_length, digits)
                                                      : root_readable(s.axis_length, s.axis_radicand, digits);
-    fmt::print(out, "{:<10} guide {}, slider {}, u = ({}, {}), |u| {}{}\n", p.name, s.guide, s.slider,
+    // A slot: the pin's link slides in the slotted link (its block is not shown).
+    const MechanismCheck::Slot* slot = slot_of_joint(c, p.name);
+    fmt::print(out, "{:<10} {}, u = ({}, {}), |u| {}{}\n", p.name,
+               slot ? slot_description(*slot) : fmt::format("guide {}, slider {}", s.guide, s.slider),
                coordinate_text(s.axis.x, digits), coordinate_text(s.axis.y, digits),
                length.rfind("≈", 0) == 0 ? "" : "= ", length);
     fmt::print(out, "{:<10} sliding v {}\n", "", unit_rate_readable(s.v_unit, s.rate_radicand, s.v_unit_bound, digits));
@@ -226,6 +231,13 @@ json to_json(const MechanismCheck& c, const ClaimsStatus& status) {
           {"not_applicable", c.not_applicable},
           {"summary", summary},
           {"exit_status", status.exit_status}};
+  if (c.dimensioned) j["dimensioned_bound"] = dimensioned_bound_json(*c.dimensioned);
+  if (!c.slots.empty()) {  // added; "links" and "joints" keep the block and the pin (existing keys)
+    json slots = json::object();
+    for (const auto& s : c.slots)
+      slots[s.joint] = {{"slotted", s.slotted}, {"pin_link", s.pin_link}, {"block", s.block}, {"pin", s.pin}};
+    j["slots"] = slots;
+  }
   if (c.ask) {
     j["ask"] = c.ask->describe();
     j["computed"] = {{"links", c.computed_links}, {"of_links", c.all_links}, {"of_loops", c.all_loops}};
@@ -257,19 +269,25 @@ void write_text(std::ostream& out, const MechanismCheck& c, const ClaimsStatus& 
   };
   if (!c.ask || !c.link_names.empty()) {
     fmt::print(out, "{:<10} {:>{}} {:>{}}\n", "link", "omega", rate_width, "omega_dot", rate_width);
-    for (size_t l = 0; l < c.link_names.size(); ++l)
+    for (size_t l = 0; l < c.link_names.size(); ++l) {
+      if (is_hidden_slot_part(c, c.link_names[l])) continue;  // a slot's block turns with the slotted link
       fmt::print(out, "{:<10} {:>{}} {:>{}}\n", c.link_names[l], cell(c.omega[l], c.omega_bound[l]), rate_width,
                  cell(c.omega_dot[l], c.omega_dot_bound[l]), rate_width);
+    }
     note();
   }
   if (!c.ask || !c.joints.empty() || !c.points.empty())
     fmt::print(out, "\n{:<10} {:>{}} {:>{}}\n", "joint", "v", point_width, "a", point_width);
   for (const auto* list : {&c.joints, &c.points})
-    for (const auto& p : *list)
+    for (const auto& p : *list) {
+      if (list == &c.joints && is_hidden_slot_part(c, p.name)) continue;  // a slot's pin: the slot's point
+      const MechanismCheck::Slot* slot = list == &c.joints ? slot_of_joint(c, p.name) : nullptr;
       fmt::print(out, "{:<10} {:>{}} {:>{}}{}\n", p.name,
                  fmt::format("({}, {})", cell(p.v[0], p.v_bound[0]), cell(p.v[1], p.v_bound[1])), point_width,
                  fmt::format("({}, {})", cell(p.a[0], p.a_bound[0]), cell(p.a[1], p.a_bound[1])), point_width,
-                 p.sliding ? "   (slider's point; its sliding rates below)" : "");
+                 slot ? "   (" + slot_description(*slot) + "; its sliding rates below)"
+                      : p.sliding ? "   (slider's point; its sliding rates below)" : "");
+    }
   note();
   write_sliding_section(out, c, digits);
   for (const auto& t : c.tables) {

@@ -10,6 +10,9 @@
 #include <map>
 #include <vector>
 
+#include "report/dimensioned_bound_report.h"
+#include "report/slot_rows.h"
+
 namespace linkproof {
 
 namespace {
@@ -83,20 +86,21 @@ json scene_placement_json(const MechanismScene& scene) {
           {"rationalised", statement.empty() ? json(nullptr) : json(statement)}};
 }
 
-void write_scene_placement_text(std::ostream& out, const MechanismScene& scene) {
+void write_scene_placement_text(std::ostream& out, const MechanismScene& scene, const DimensionedBound* bound) {
   const ScenePlacement& p = scene.placement;
   if (!p.is_dimensioned()) return;
-  if (p.is_rationalised())
+  if (p.is_rationalised()) {
     fmt::print(out,
                "{}\n  (each coordinate of a position or direction, each rate: |rational - dimensioned value| <= the "
                "bound, certified by enclosures in ball arithmetic over exact rationals)\n  The results below are "
-               "exact for these rationals; how far they are from the results at the dimensioned values is not "
-               "bounded here.\n",
+               "exact for these rationals.\n",
                rationalised_statement(scene));
-  else
+    if (bound) fmt::print(out, "  {}\n", dimensioned_bound_summary(*bound));
+  } else
     fmt::print(out, "positions from dimensions: every position and rate is exact (rational)\n");
   fmt::print(out, "{:<16} {:<20} {}\n", "joint", "given by", "position used");
   for (const GivenValue& v : p.joints) {
+    if (is_slot_pin_joint(scene.linkage, v.subject)) continue;  // at its slot's point, placed with it
     fmt::print(out, "{:<16} {:<20} {}\n", v.subject, v.given_by,
                v.exact ? "exact" : "rationalised, within " + format_bound(v.bound));
   }

@@ -17,6 +17,7 @@
 #include <ostream>
 #include <string>
 
+#include "linkproof/mechanism/mechanism_check.h"
 #include "linkproof/mechanism/mechanism_scene.h"
 
 namespace linkproof {
@@ -31,7 +32,10 @@ std::string rationalised_statement(const MechanismScene& scene);
 /// For a scene given by dimensions (ScenePlacement::is_dimensioned): the statement above, what
 /// the results are exact for, and a table of every joint and rate given by dimensions. Nothing
 /// otherwise.
-void write_scene_placement_text(std::ostream& out, const MechanismScene& scene);
+/// `bound`: the check's bound on the distance to the results at the dimensioned values
+/// (MechanismCheck::dimensioned), one line after the statement; without it (nullptr) the
+/// results are said to be exact for the rationals only.
+void write_scene_placement_text(std::ostream& out, const MechanismScene& scene, const DimensionedBound* bound = nullptr);
 
 /// The smallest power of ten at or above b, "1e-60"; "0" for b = 0.
 std::string format_bound(const Rational& b);

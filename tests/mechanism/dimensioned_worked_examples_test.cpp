@@ -16,14 +16,14 @@
 #include <cln/real.h>
 
 #include "linkproof/io/mechanism_scene.h"
+#include "mechanism/dimensioned_closed_forms.h"
 #include "mechanism/mechanism_catalogue.h"
 
 namespace linkproof {
 namespace {
 
-const cln::float_format_t kDigits150 = cln::float_format(150);
-cln::cl_F lf(const Rational& q) { return cln::cl_float(q, kDigits150); }
-cln::cl_F lf(long n) { return cln::cl_float(cln::cl_I(n), kDigits150); }
+using testing::lf;
+const cln::float_format_t kDigits150 = testing::kClosedFormDigits;
 const Rational kAgreement = Rational(1) / cln::expt(Rational(10), 40);
 const Rational kRationalised = Rational(1) / cln::expt(Rational(10), 58);
 
@@ -69,26 +69,12 @@ mechanism:
 )");
   expect_rationalised_within(r.scene, kRationalised);
   EXPECT_TRUE(r.scene.placement.is_rationalised());
-  // Closed form. Loop: a e2 + b e3 - c e4 - d = 0, e_k = (cos th_k, sin th_k).
-  const cln::cl_F pi = cln::pi(kDigits150), a = lf(40), b = lf(120), c = lf(80), d = lf(100);
-  const cln::cl_F th2 = pi / 6, w2 = lf(1500) * lf(2) * pi / lf(60);
-  const cln::cl_F ax = a * cln::cos(th2), ay = a * cln::sin(th2), fx = d - ax, fy = -ay;
-  const cln::cl_F f = cln::sqrt(fx * fx + fy * fy);
-  const cln::cl_F cos_beta = (b * b + f * f - c * c) / (lf(2) * b * f);  // law of cosines at A
-  const cln::cl_F th3 = cln::atan(fx, fy) + cln::atan(cos_beta, cln::sqrt(lf(1) - cos_beta * cos_beta));
-  const cln::cl_F bx = ax + b * cln::cos(th3), by = ay + b * cln::sin(th3);
-  const cln::cl_F th4 = cln::atan(bx - d, by);
-  // Velocities: w3 b J e3 - w4 c J e4 = -w2 a J e2 (J e = (-sin, cos)); Cramer on
-  // [[-b s3, c s4], [b c3, -c c4]].
-  const cln::cl_F s2 = cln::sin(th2), c2 = cln::cos(th2), s3 = cln::sin(th3), c3 = cln::cos(th3),
-                  s4 = cln::sin(th4), c4 = cln::cos(th4);
-  const cln::cl_F det = (-b * s3) * (-c * c4) - (c * s4) * (b * c3);
-  const cln::cl_F r1 = w2 * a * s2, r2 = -w2 * a * c2;
-  const cln::cl_F w3 = (r1 * (-c * c4) - (c * s4) * r2) / det, w4 = ((-b * s3) * r2 - (b * c3) * r1) / det;
-  // Accelerations (alpha2 = 0): al3 b J e3 - al4 c J e4 = a w2^2 e2 + b w3^2 e3 - c w4^2 e4.
-  const cln::cl_F q1 = a * w2 * w2 * c2 + b * w3 * w3 * c3 - c * w4 * w4 * c4,
-                  q2 = a * w2 * w2 * s2 + b * w3 * w3 * s3 - c * w4 * w4 * s4;
-  const cln::cl_F al3 = (q1 * (-c * c4) - (c * s4) * q2) / det, al4 = ((-b * s3) * q2 - (b * c3) * q1) / det;
+  // Closed form (mechanism/dimensioned_closed_forms.h).
+  const cln::cl_F pi = cln::pi(kDigits150);
+  const testing::FourBarClosedForm cf = testing::fourbar_closed_form(lf(40), lf(120), lf(80), lf(100), pi / 6,
+                                                                     lf(1500) * lf(2) * pi / lf(60));
+  const cln::cl_F &bx = cf.bx, &by = cf.by, &w3 = cf.w3, &w4 = cf.w4, &al3 = cf.al3, &al4 = cf.al4;
+  const cln::cl_F w2 = lf(1500) * lf(2) * pi / lf(60);
 
   const Vec2<Rational>& B = r.scene.linkage.joint(r.joint("B")).at;
   const Rational bound = r.scene.placement.joints[static_cast<size_t>(r.joint("B"))].bound;
@@ -121,25 +107,20 @@ mechanism:
     - {link: crank, omega: -2000rpm, omega_dot: 0}
 )");
   expect_rationalised_within(r.scene, kRationalised);
-  // Closed form: x_B = r cos th + S, S = sqrt(l^2 - r^2 sin^2 th); v_B = w x', a_B = w^2 x''
-  // (alpha2 = 0) with x' = -r sin th - r^2 sin th cos th / S and
-  // x'' = -r cos th - r^2 (cos 2th / S + r^2 sin^2 th cos^2 th / S^3); the rod: l sin phi =
-  // -r sin th, so w3 = -r w cos th / S and al3 = r sin th (w^2 - w3^2) / S.
-  const cln::cl_F pi = cln::pi(kDigits150), rr = lf(50), l = lf(200), th = pi / 3, w = lf(-2000) * lf(2) * pi / lf(60);
-  const cln::cl_F s = cln::sin(th), c = cln::cos(th), S = cln::sqrt(l * l - rr * rr * s * s);
-  const cln::cl_F x = rr * c + S, x1 = -rr * s - rr * rr * s * c / S;
-  const cln::cl_F x2 = -rr * c - rr * rr * ((c * c - s * s) / S + rr * rr * s * s * c * c / (S * S * S));
-  const cln::cl_F w3 = -rr * w * c / S, al3 = rr * s * (w * w - w3 * w3) / S;
+  // Closed form (mechanism/dimensioned_closed_forms.h).
+  const cln::cl_F pi = cln::pi(kDigits150), w = lf(-2000) * lf(2) * pi / lf(60);
+  const testing::SliderCrankClosedForm cf = testing::slider_crank_closed_form(lf(50), lf(200), pi / 3, w);
+  const cln::cl_F &x = cf.x, &w3 = cf.w3, &al3 = cf.al3;
 
   const int B = r.joint("B"), D = r.joint("D");
   EXPECT_LE(cln::abs(lf(r.scene.linkage.joint(B).at.x) - x), lf(r.scene.placement.joints[static_cast<size_t>(B)].bound));
   EXPECT_EQ(r.scene.linkage.joint(B).at.y, 0);  // on the line: the y of the slide is exact
   const auto& m = r.truth.motion;
-  expect_agrees(m.joint_v[static_cast<size_t>(B)].x, w * x1, "v_B");
-  expect_agrees(m.slide[static_cast<size_t>(D)], w * x1, "sliding velocity of D");
+  expect_agrees(m.joint_v[static_cast<size_t>(B)].x, cf.v, "v_B");
+  expect_agrees(m.slide[static_cast<size_t>(D)], cf.v, "sliding velocity of D");
   EXPECT_EQ(m.joint_v[static_cast<size_t>(B)].y, 0);
-  expect_agrees(m.joint_a[static_cast<size_t>(B)].x, w * w * x2, "a_B");
-  expect_agrees(m.slide_dot[static_cast<size_t>(D)], w * w * x2, "sliding acceleration of D");
+  expect_agrees(m.joint_a[static_cast<size_t>(B)].x, cf.a, "a_B");
+  expect_agrees(m.slide_dot[static_cast<size_t>(D)], cf.a, "sliding acceleration of D");
   expect_agrees(r.omega("rod"), w3, "omega3");
   expect_agrees(r.alpha("rod"), al3, "alpha3");
   EXPECT_NEAR(cln::double_approx(m.joint_v[static_cast<size_t>(B)].x), 10230.16288, 1e-5);

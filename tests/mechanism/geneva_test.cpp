@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,9 @@
 #include "linkproof/io/mechanism_scene.h"
 #include "linkproof/mechanism/mechanism_check.h"
 #include "mechanism/mechanism_test_support.h"
+#include "exit_status.h"
+#include "report/claims_status.h"
+#include "report/mechanism_report.h"
 
 namespace linkproof {
 namespace {
@@ -166,6 +170,44 @@ TEST(SlotJoint, SceneWriterRoundTripsTheDesugaredSlot) {
   const MechanismCheck a = check_mechanism(s, Arithmetic::Exact), b = check_mechanism(back, Arithmetic::Exact);
   EXPECT_EQ(exact(a.omega[link_index(a, "wheel")]), exact(b.omega[link_index(b, "wheel")]));
   EXPECT_EQ(exact(a.omega_dot[link_index(a, "wheel")]), exact(b.omega_dot[link_index(b, "wheel")]));
+}
+
+// The lines of `text` that start with `prefix`.
+std::vector<std::string> lines_starting(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) out.push_back(line);
+  return out;
+}
+
+// The slot is one joint in `check`'s text: no row for the block link P.block or the pin joint
+// P.pin, P's row and its sliding section say what it is, with the sliding rates and the Coriolis
+// term; the JSON keeps its existing keys and adds `slots`.
+TEST(SlotJoint, CheckTextShowsTheSlotAsOneJointWithoutItsBlockRow) {
+  const MechanismScene s = load_mechanism_scene(testing::mechanism_scene_path("geneva.yaml"));
+  const MechanismCheck c = check_mechanism(s, Arithmetic::Exact);
+  ASSERT_EQ(c.slots.size(), 1u);
+  EXPECT_EQ(c.slots[0].block, "P.block");
+  EXPECT_EQ(c.slots[0].pin_link, "crank");
+  std::ostringstream out;
+  write_text(out, c, cli::claims_status(c.claims));
+  const std::string text = out.str();
+  EXPECT_TRUE(lines_starting(text, "P.block ").empty()) << text;
+  EXPECT_TRUE(lines_starting(text, "P.pin ").empty()) << text;
+  const std::vector<std::string> p = lines_starting(text, "P ");
+  ASSERT_EQ(p.size(), 2u) << text;  // the joint row and the sliding section's first line
+  EXPECT_NE(p[0].find("(pin of crank in a slot of wheel; its sliding rates below)"), std::string::npos) << p[0];
+  EXPECT_NE(p[1].find("pin of crank in a slot of wheel, u = "), std::string::npos) << p[1];
+  EXPECT_NE(text.find("sliding v "), std::string::npos);
+  EXPECT_NE(text.find("sliding a "), std::string::npos);
+  EXPECT_NE(text.find("Coriolis  ("), std::string::npos);
+  EXPECT_FALSE(lines_starting(text, "wheel ").empty());
+  const nlohmann::json j = to_json(c, cli::claims_status(c.claims));
+  EXPECT_TRUE(j["links"].contains("P.block"));  // existing keys stay
+  EXPECT_TRUE(j["joints"].contains("P.pin"));
+  EXPECT_EQ(j["slots"]["P"]["slotted"], "wheel");
+  EXPECT_EQ(j["slots"]["P"]["pin_link"], "crank");
 }
 
 }  // namespace

@@ -136,6 +136,41 @@ TEST(ReportCli, SliderCrankFromDimensionsShowsLongFractionsByTheirDecimals) {
   EXPECT_NE(html.find("id=\"fig-slider-crank-from-dimensions-accelerations\""), std::string::npos);
 }
 
+// Issue 27: a slot is one joint in the reports. The reader solves it with a block link P.block
+// and a pin joint P.pin, which appear in no table, drawing or count; P's row says what it is
+// and a paragraph gives its sliding rates and Coriolis term.
+TEST(ReportCli, GenevaReportShowsTheSlotAsOneJointWithoutItsBlockLink) {
+  TempDir dir("geneva");
+  const CliRun r = run_cli({"report", source("verify/scenes/mechanisms/geneva.yaml"), "--format", "all", "--out",
+                            dir.path.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* file : {"geneva.md", "geneva.html", "geneva.tex", "geneva-six-slot-linkage.svg",
+                           "geneva-six-slot-velocities.svg"}) {
+    const std::string text = slurp(dir.path / file);
+    EXPECT_EQ(text.find("P.block"), std::string::npos) << file;
+    EXPECT_EQ(text.find("P.pin"), std::string::npos) << file;
+  }
+  const std::string md = slurp(dir.path / "geneva.md");
+  EXPECT_NE(md.find("| P (pin of crank in a slot of wheel) |"), std::string::npos);
+  EXPECT_NE(md.find("- mobility 1: 3 links, 3 joints, 1 independent loop"), std::string::npos);
+  const size_t slot = md.find("Slot P: a pin of crank in a slot of wheel");
+  ASSERT_NE(slot, std::string::npos);
+  EXPECT_NE(md.find("$\\dot\\sigma =$", slot), std::string::npos) << "sliding rate";
+  EXPECT_NE(md.find("$\\ddot\\sigma =$", slot), std::string::npos) << "sliding acceleration";
+  EXPECT_NE(md.find("its Coriolis acceleration", slot), std::string::npos);
+  const std::string html = slurp(dir.path / "geneva.html");
+  EXPECT_NE(html.find("<td>wheel</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>P (pin of crank in a slot of wheel)</td>"), std::string::npos);
+  // check's text: the placement table has the slot P and no row for its pin.
+  const CliRun check = run_cli({"check", source("verify/scenes/mechanisms/geneva.yaml")});
+  ASSERT_EQ(check.code, 0) << check.err;
+  EXPECT_EQ(check.out.find("\nP.pin "), std::string::npos) << check.out;
+  EXPECT_EQ(check.out.find("\nP.block "), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("\nP                polar"), std::string::npos) << check.out;
+  // The rationalised scene's distance to the dimensioned values is said beside the statement.
+  EXPECT_NE(r.err.find("distance to the dimensioned values: omega <= "), std::string::npos) << r.err;
+}
+
 TEST(ReportCli, NumericsSectionOnlyWhenAsked) {
   TempDir dir("numerics");
   const CliRun r = run_cli({"report", source("verify/scenes/pentagon.yaml"), "--numerics", "--format", "md", "--out",

@@ -41,6 +41,32 @@ struct ReportTable {
   std::vector<std::pair<std::string, std::string>> rows;
 };
 
+/// For a scene run on rationalised positions, axes or rates (MechanismScene::placement): how far
+/// each exact result for the rationals may be from the same result at the dimensioned values
+/// (docs/mechanisms.md, "Rationalised, and said so"; mechanism/dimensioned_bound.h derives it).
+/// Every bound b is |result for the rationals - result at the dimensioned values| <= b, per
+/// coordinate for a vector, rounded up to a double; +inf where nothing is bounded.
+struct DimensionedBound {
+  bool bounded = false;  ///< every bound below is finite
+  std::string reason;    ///< when not bounded: the first quantity without a bound, and why
+  int digits = 0;        ///< decimal digits of the bounding solve
+  struct Link {
+    std::string name;
+    double omega = 0, omega_dot = 0;
+  };
+  struct Point {
+    std::string name;
+    double v = 0, a = 0;
+    /// Prismatic joints: sigma-dot, sigma-ddot (per unit of the axis as written), the rates along
+    /// the unit axis and the Coriolis term.
+    std::optional<double> slide, slide_dot, v_unit, a_unit, coriolis;
+  };
+  std::vector<Link> links;           ///< every link but the ground, in link order
+  std::vector<Point> joints, points;
+  /// The largest bound of each kind (the summary): omega, omega-dot, point velocity and
+  /// acceleration, sliding velocity and acceleration (along the unit axis; 0 without sliders).
+  double omega = 0, omega_dot = 0, v = 0, a = 0, sliding_v = 0, sliding_a = 0;
+};
 
 struct MechanismCheck {
   std::string scene;
@@ -122,6 +148,16 @@ struct MechanismCheck {
   std::optional<SceneAsk> ask;
   std::vector<std::string> computed_links;
   int all_links = 0, all_loops = 0;
+  /// Set for a scene whose positions, axes or rates are rationalised (nullopt for an exact scene).
+  std::optional<DimensionedBound> dimensioned;
+  /// A pin in a straight slot (`type: slot`, docs/mechanisms.md "Slots"), which the reader writes
+  /// as the prismatic pair `joint` [slotted, block] and the revolute pair `pin` [block, pin_link]
+  /// at one point: reports show it as one joint and no row for the block link (JSON keeps both).
+  struct Slot {
+    std::string joint, block, pin;  ///< P, P.block, P.pin
+    std::string slotted, pin_link;  ///< the link with the slot, the link with the pin
+  };
+  std::vector<Slot> slots;
 };
 
 /// Solves the scene and runs the built-in claims (in arithmetic `a`, as MechanismCheck describes).

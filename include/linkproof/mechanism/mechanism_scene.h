@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linkproof/check/ask.h"
@@ -57,6 +58,9 @@ struct ScenePlacement {
   std::vector<GivenValue> joints;  ///< one per joint, in joint order
   std::vector<GivenValue> axes;    ///< prismatic axes given as an angle
   std::vector<GivenValue> rates;   ///< input rates given as an expression (pi, rpm)
+  /// Prismatic axes given as `axis: {from: J}` (joint, J): u = P - J follows the two positions,
+  /// so it moves with them when they are rationalised (mechanism/dimensioned_bound.h).
+  std::vector<std::pair<std::string, std::string>> axes_from;
   /// True when some value is not exact: the check runs on rationalised values.
   bool is_rationalised() const;
   /// True when some joint is placed from dimensions or some value given as an expression.
