@@ -18,8 +18,11 @@
 //   centre(P, L, M)             the centre of curvature of the path of the point of L at P
 //                               seen from M: P + |v|^2/(v x a) J v (undefined where v = 0 or
 //                               v x a = 0)
+//   centre_at(X, L, M)          the same for the point of L at a constructed position X (a
+//                               vector: a meet, a pole), e.g. Dijksman's double joints I13
 //   sliding_v(J), sliding_a(J)  the rates of prismatic joint J along its unit axis (slider
 //                               relative to guide): sigma-dot |u|, sigma-ddot |u|
+//   axis(J)                     the unit axis u of prismatic joint J (its guide's direction)
 //   dot, cross, perp, norm2, vx, vy, vec(x, y), meet(A, B, C, D) (lines AB and CD)
 #pragma once
 
@@ -41,7 +44,7 @@ enum class MechanismKind {
 enum class MechanismQuantity {
   Omega, OmegaRelative, Alpha, AlphaRelative,
   Position, Velocity, VelocityRelative, Acceleration, AccelerationRelative,
-  Pole, Centre, SlidingV, SlidingA,
+  Pole, Centre, CentreAt, SlidingV, SlidingA, Axis,
   Dot, Cross, Perp, Norm2, Vx, Vy, Vec, Meet,
 };
 

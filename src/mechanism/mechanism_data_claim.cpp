@@ -167,8 +167,11 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
       if (!p.is_finite()) undefined(n, p.reason);
       return vector_value(p.at);
     }
-    case Q::Centre: {
-      const P c = construct_curvature_centre(position(a[0], f), link_motion(true), n.text);
+    case Q::Centre:
+    case Q::CentreAt: {
+      // centre_at: the point of L at a constructed position (a vector argument), not a named one.
+      const Vec2<T> X = n.word->quantity == Q::Centre ? position(a[0], f) : as_vector(value(0));
+      const P c = construct_curvature_centre(X, relative_point_motion(field_of(a[1], f), field_of(a[2], f), X), n.text);
       if (c.kind == P::Kind::AtInfinity)
         undefined(n, "the centre is at infinity: the point is on the inflection circle (v x a = 0)");
       if (!c.is_finite()) undefined(n, c.reason);
@@ -176,6 +179,13 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
     }
     case Q::SlidingV: return number(slide(f.motion.slide));
     case Q::SlidingA: return number(slide(f.motion.slide_dot));
+    case Q::Axis: {
+      // Unit, like the axis the sliding rates are measured along: a value independent of how
+      // long the scene writes the axis (a proof's axes are unit by construction).
+      const T length = axis_length(a[0], f);
+      const Vec2<T>& u = f.axis[static_cast<size_t>(a[0].index)];
+      return vector_value(Vec2<T>{u.x / length, u.y / length});
+    }
     case Q::Dot: return number(dot(as_vector(value(0)), as_vector(value(1))));
     case Q::Cross: return number(cross(as_vector(value(0)), as_vector(value(1))));
     case Q::Perp: return vector_value(perp(as_vector(value(0))));

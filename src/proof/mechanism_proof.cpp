@@ -238,9 +238,11 @@ void claim_degeneracies(const MechanismNode& n, const MechanismFrameOf<ex>& f, N
                            fmt::format("omega({0}) = omega({1}): {2} is at infinity (a relative translation) or undefined",
                                        a[0].text, a[1].text, n.text));
           break;
-        case MechanismQuantity::Centre: {
-          const Vec2<ex>& X = a[0].is_tracer_point ? f.point_at[static_cast<size_t>(a[0].index)]
-                                                   : f.joint_at[static_cast<size_t>(a[0].index)];
+        case MechanismQuantity::Centre:
+        case MechanismQuantity::CentreAt: {
+          const Vec2<ex> X = n.word->quantity == MechanismQuantity::CentreAt ? vec(0)
+                             : a[0].is_tracer_point                        ? f.point_at[static_cast<size_t>(a[0].index)]
+                                                                           : f.joint_at[static_cast<size_t>(a[0].index)];
           const RelativePointMotion<ex> m = relative_point_motion(field(1), field(2), X);
           out.emplace_back(cross(m.v, m.a), fmt::format("v x a = 0 for {0}: the point is on the inflection circle or at the "
                                                          "pole, {1} is at infinity or undefined", a[0].text, n.text));

@@ -70,7 +70,7 @@ Fraction cancelled(const Fraction& f, bool cancel) {
 const Fraction& RationalNormalizer::normal(const ex& e) {
   const auto it = memo_.find(e);
   if (it != memo_.end()) return it->second;
-  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out"};
+  check_deadline();
   Fraction f = compute(e);
   return memo_.emplace(e, std::move(f)).first->second;
 }
@@ -81,12 +81,20 @@ Fraction RationalNormalizer::compute(const ex& e) {
   const SizeCheck size_check = [this](const ex& a, const ex& b) { check_product_size(a, b); };
   if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
     Fraction acc = make(0, 1, true);
-    for (size_t i = 0; i < e.nops(); ++i) acc = sum(acc, normal(e.op(i)), cancel_, size_check);
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const Fraction& term = normal(e.op(i));
+      check_deadline();  // a memoized term is not checked by normal()
+      acc = sum(acc, term, cancel_, size_check);
+    }
     return cancelled(acc, cancel_);
   }
   if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
     Fraction acc = make(1, 1, true);
-    for (size_t i = 0; i < e.nops(); ++i) acc = product(acc, normal(e.op(i)), cancel_, size_check);
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const Fraction& factor = normal(e.op(i));
+      check_deadline();
+      acc = product(acc, factor, cancel_, size_check);
+    }
     return acc;
   }
   if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1)) &&
@@ -95,6 +103,7 @@ Fraction RationalNormalizer::compute(const ex& e) {
     const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
     if (k.is_zero()) return make(1, 1, true);
     const int exponent = k.is_positive() ? k.to_int() : -k.to_int();
+    check_deadline();
     check_product_size(b.num, b.num, exponent);
     check_product_size(b.den, b.den, exponent);
     if (k.is_positive()) return make(GiNaC::expand(GiNaC::pow(b.num, k)), GiNaC::expand(GiNaC::pow(b.den, k)), b.polynomial);
@@ -105,6 +114,10 @@ Fraction RationalNormalizer::compute(const ex& e) {
   // own normal form, kept opaque (no gcd is taken with it).
   const ex nd = GiNaC::normal(e).numer_denom();
   return make(GiNaC::expand(nd.op(0)), GiNaC::expand(nd.op(1)), false);
+}
+
+void RationalNormalizer::check_deadline() const {
+  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out"};
 }
 
 void RationalNormalizer::check_product_size(const ex& a, const ex& b, int power) const {

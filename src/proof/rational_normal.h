@@ -71,6 +71,9 @@ class RationalNormalizer {
   bool cancel_ = true;
   double term_limit_ = 0;  // 0: none
   void check_product_size(const GiNaC::ex& a, const GiNaC::ex& b, int power = 1) const;
+  /// Throws NormalizerOutOfTime past the deadline: before every combination of normalized parts,
+  /// which is where the time goes when the parts themselves are memoized.
+  void check_deadline() const;
 };
 
 }  // namespace linkproof::proof_detail

@@ -71,8 +71,8 @@ TEST(MechanismVocabulary, EveryWordHasASignatureAndMeaning) {
     EXPECT_EQ(w.signature.substr(0, w.name.size() + 1), w.name + "(") << w.signature;
     EXPECT_FALSE(w.meaning.empty()) << w.name;
   }
-  for (const char* word : {"omega", "alpha", "pos", "vel", "acc", "pole", "centre", "sliding_v", "sliding_a", "dot",
-                           "cross", "perp", "norm2", "vx", "vy", "meet"})
+  for (const char* word : {"omega", "alpha", "pos", "vel", "acc", "pole", "centre", "centre_at", "sliding_v", "sliding_a",
+                           "axis", "dot", "cross", "perp", "norm2", "vx", "vy", "meet"})
     EXPECT_FALSE(mechanism_word_signatures(word).empty()) << word;
 }
 

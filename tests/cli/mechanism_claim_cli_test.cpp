@@ -118,7 +118,8 @@ TEST(MechanismClaimCli, VocabularyListsTheMechanismWords) {
   const CliRun r = run_cli({"check-claim", "--vocabulary"});
   EXPECT_EQ(r.code, 0);
   for (const char* w : {"omega(L, M)", "alpha(L)", "pos(P)", "vel(P, L, M)", "acc(P, L, M)", "pole(L, M)",
-                        "centre(P, L, M)", "sliding_v(J)", "sliding_a(J)", "meet(A, B, C, D)", "norm2(a)", "vx(a)"})
+                        "centre(P, L, M)", "centre_at(X, L, M)", "sliding_v(J)", "sliding_a(J)", "axis(J)",
+                        "meet(A, B, C, D)", "norm2(a)", "vx(a)"})
     EXPECT_NE(r.out.find(w), std::string::npos) << w;
   EXPECT_NE(r.out.find("omega_dot_out"), std::string::npos) << "the polygon words are still listed";
 }

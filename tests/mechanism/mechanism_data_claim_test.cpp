@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "linkproof/io/mechanism_scene.h"
+#include "support/temp_dir.h"
 
 namespace linkproof {
 namespace {
@@ -61,6 +62,41 @@ TEST(MechanismDataClaim, UndefinedQuantitiesAreNamedNeverAPass) {
   EXPECT_EQ(verdict_of("1/omega(\"1\")", "0", &o), Verdict::Undefined);
   EXPECT_EQ(o.headline.undefined_quantity, "omega(\"1\")");
   EXPECT_EQ(verdict_of("centre(O2, \"2\", \"1\")", "vec(0, 0)", &o), Verdict::Undefined);
+}
+
+TEST(MechanismDataClaim, CentreAtAConstructedPositionIsTheCentreOfThePointThere) {
+  // At a joint's position it is centre(P, L, M); at a constructed point (the pole of 3 and 1
+  // built by a meet) the point of 3 there has v = 0: a cusp, undefined, never a pass.
+  EXPECT_EQ(verdict_of("centre_at(pos(P), \"3\", \"1\")", "centre(P, \"3\", \"1\")"), Verdict::Holds);
+  EXPECT_EQ(verdict_of("centre_at(pos(P) + vec(0, 0), \"3\", \"1\")", "vec(10923/1222, 17083/1222)"), Verdict::Holds);
+  EXPECT_EQ(verdict_of("centre_at(pos(B), \"3\", \"1\")", "centre(B, \"3\", \"1\")"), Verdict::Holds);
+  EXPECT_EQ(verdict_of("centre_at(pos(B), \"3\", \"1\")", "centre(A, \"3\", \"1\")"), Verdict::Fails);
+  ClaimOutcome o;
+  EXPECT_EQ(verdict_of("centre_at(meet(pos(O2), pos(A), pos(O4), pos(B)), \"3\", \"1\")", "vec(0, 0)", &o),
+            Verdict::Undefined);
+  EXPECT_NE(o.headline.reason.find("v = 0"), std::string::npos) << o.headline.reason;
+}
+
+MechanismScene slider_scene(const std::string& axis) {
+  std::string text = test::slurp(std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/mechanisms/seed003_class3.yaml");
+  const std::string old_axis = "at: [117.349, -26.785], axis: [1, 0]";
+  text.replace(text.find(old_axis), old_axis.size(), "at: [117.349, -26.785], axis: " + axis);
+  return parse_mechanism_scene(text, "class3.yaml");
+}
+
+Verdict slider_verdict(const MechanismScene& s, const std::string& lhs, const std::string& rhs) {
+  const MechanismSolution<Rational> truth = solve_mechanism_exact(s);
+  return run_mechanism_claim(to_mechanism_claim(claim(lhs, rhs, s)), MechanismContext{s, truth}).verdict;
+}
+
+TEST(MechanismDataClaim, AxisIsTheUnitDirectionOfTheGuideHoweverTheSceneWritesIt) {
+  EXPECT_EQ(slider_verdict(slider_scene("[1, 0]"), "axis(D)", "vec(1, 0)"), Verdict::Holds);
+  EXPECT_EQ(slider_verdict(slider_scene("[3, 0]"), "axis(D)", "vec(1, 0)"), Verdict::Holds);
+  EXPECT_EQ(slider_verdict(slider_scene("[-2, 0]"), "axis(D)", "vec(1, 0)"), Verdict::Fails);
+  // The slider's velocity lies along its fixed guide.
+  EXPECT_EQ(slider_verdict(slider_scene("[3, 0]"), "cross(vel(C, \"4\"), axis(D))", "0"), Verdict::Holds);
+  EXPECT_EQ(slider_verdict(slider_scene("[1, 0]"), "axis(H)", "vec(0, 1)"), Verdict::Holds);
+  EXPECT_THROW(claim("axis(A)", "vec(1, 0)", seed001()), InputError);  // a revolute joint
 }
 
 TEST(MechanismDataClaim, UnknownNamesAreBadInputAtTheirColumn) {
