@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <vector>
 
@@ -65,7 +66,11 @@ std::string rationalised_statement(const MechanismScene& scene) {
   const ScenePlacement& p = scene.placement;
   if (!p.is_rationalised()) return "";
   std::vector<std::string> parts;
-  if (const std::string j = grouped(p.joints); !j.empty()) parts.push_back("joints " + j);
+  // A slot is one joint to its reader: its pin joint P.pin is at P and placed with it.
+  std::vector<GivenValue> joints;
+  std::copy_if(p.joints.begin(), p.joints.end(), std::back_inserter(joints),
+               [&](const GivenValue& v) { return !is_slot_pin_joint(scene.linkage, v.subject); });
+  if (const std::string j = grouped(joints); !j.empty()) parts.push_back("joints " + j);
   std::vector<GivenValue> axes = p.axes;
   for (GivenValue& a : axes) a.subject = "of " + a.subject;
   if (const std::string a = grouped(axes); !a.empty()) parts.push_back("prismatic axes " + a);

@@ -77,5 +77,18 @@ TEST(DimensionsCli, OtherCommandsNoteTheRationalisedPositionsOnStandardError) {
   EXPECT_NE(r.err.find("note: " + bundled("dimensions_fourbar.yaml") + ": " + kStatement), std::string::npos) << r.err;
 }
 
+// A slot is one joint to its reader (report/slot_rows.h): the statement names P, not the pin
+// joint P.pin that the engine adds at the same point.
+TEST(DimensionsCli, TheStatementNamesASlotOnceNotItsPinJoint) {
+  const test::CliRun r = test::run_cli({"check", bundled("geneva.yaml")});
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  EXPECT_EQ(r.out.rfind("runs on rationalised positions: joints P within 1e-58; input rates inputs[0].omega "
+                        "within 1e-59\n",
+                        0),
+            0u)
+      << r.out;
+  EXPECT_EQ(r.out.find("P.pin"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace linkproof
