@@ -30,6 +30,7 @@ import time
 #            ("min_per_second", r): items per second at least r
 #            ("faster_than", other_bench_regex, factor): at least `factor` times faster than other
 #            ("faster_than_sympy", factor): at least `factor` times faster than the SymPy derivation
+#            ("max_counter", name, s): the benchmark's counter `name` (seconds) at most s
 #            None: no goal set yet (the row shows the measurement only)
 #   note     shown beside the goal (the issue's wording)
 ROWS = [
@@ -64,15 +65,17 @@ ROWS = [
     {"row": "count, triangle rank alone, n = 60", "bench": r"^BM_CountTriangleRank/60$", "goal": None},
     {"row": "mechanism chains", "bench": r"^BM_MechanismChain", "goal": None},
     {"row": "prove --topology, every claim of fourbar.yaml (7)", "bench": r"^BM_TopologyProofEveryClaim/0$",
-     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+     "goal": ("max_counter", "slowest_claim_s", 5), "note": "<= 5 s per claim (the slowest; measured: all claims, then the slowest)"},
     {"row": "prove --topology, the notes' four-bar acceleration polygon (9)", "bench": r"^BM_TopologyProofEveryClaim/1$",
-     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+     "goal": ("max_counter", "slowest_claim_s", 5), "note": "<= 5 s per claim (the slowest; measured: all claims, then the slowest)"},
     {"row": "prove --topology, slider-crank claims (5)", "bench": r"^BM_TopologyProofEveryClaim/2$",
-     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
+     "goal": ("max_counter", "slowest_claim_s", 5), "note": "<= 5 s per claim (the slowest; measured: all claims, then the slowest)"},
     {"row": "prove --topology, inverted slider-crank claims (6)", "bench": r"^BM_TopologyProofEveryClaim/3$",
-     "goal": ("max_seconds", 5), "note": "<= 5 s per claim (here: all claims together)"},
-    {"row": "prove --topology, Watt six-bar claims (6)", "bench": r"^BM_TopologyProofEveryClaim/4$",
-     "goal": ("max_seconds", 60), "note": "<= 60 s per claim (here: all claims together)"},
+     "goal": ("max_counter", "slowest_claim_s", 5), "note": "<= 5 s per claim (the slowest; measured: all claims, then the slowest)"},
+    {"row": "prove --topology, Watt six-bar claims (9)", "bench": r"^BM_TopologyProofEveryClaim/4$",
+     "goal": ("max_counter", "slowest_claim_s", 60), "note": "<= 60 s per claim (the slowest; measured: all claims, then the slowest)"},
+    {"row": "prove --topology, Stephenson six-bar claims (8)", "bench": r"^BM_TopologyProofEveryClaim/5$",
+     "goal": ("max_counter", "slowest_claim_s", 60), "note": "<= 60 s per claim (the slowest; measured: all claims, then the slowest)"},
     {"row": "random exact four-bar configurations, a point-acceleration claim, one core",
      "bench": r"^BM_TopologySamplesExact$", "goal": ("min_per_second", 2000), "note": ">= 2,000/s"},
     {"row": "random double four-bar configurations, the same claim", "bench": r"^BM_TopologySamplesDouble$",
@@ -168,6 +171,12 @@ def evaluate(row, benchmarks, sympy_s):
     if kind == "min_per_second":
         rate = b.get("items_per_second", 1 / t)
         return measured, "met" if rate >= goal[1] else f"missed: {goal[1] / rate:.2g}x too slow"
+    if kind == "max_counter":
+        value = b.get(goal[1])
+        if value is None:
+            return measured, f"counter {goal[1]} not reported"
+        measured += f"; slowest claim {fmt_time(value)}"
+        return measured, "met" if value <= goal[2] else f"missed: {value / goal[2]:.2g}x the goal"
     if kind == "faster_than":
         other = find(benchmarks, goal[1])
         if other is None:

@@ -25,7 +25,8 @@ const ClaimSet kSets[] = {
     {"verify/claims/mechanisms/fourbar_acceleration_polygon.yaml", "verify/scenes/mechanisms/seed001_fourbar.yaml"},
     {"verify/claims/mechanisms/slider_crank.yaml", "verify/scenes/mechanisms/dimensions_slider_crank.yaml"},
     {"verify/claims/mechanisms/inverted_slider_crank.yaml", "verify/scenes/mechanisms/inverted_slider_crank.yaml"},
-    {"verify/claims/mechanisms/sixbar_watt.yaml", "verify/scenes/mechanisms/pmks_watt_i_0.yaml"}};
+    {"verify/claims/mechanisms/sixbar_watt.yaml", "verify/scenes/mechanisms/pmks_watt_i_0.yaml"},
+    {"verify/claims/mechanisms/sixbar_stephenson.yaml", "verify/scenes/mechanisms/pmks_stephenson_iii_example_2_0.yaml"}};
 
 std::vector<MechanismDataClaim> bound_claims(const ClaimSet& set, const MechanismScene& scene) {
   MechanismClaimFile f = load_mechanism_claim_file(source(set.claims));
@@ -48,7 +49,7 @@ void BM_TopologyProofEveryClaim(benchmark::State& st) {
   st.counters["slowest_claim_s"] = slowest;
   st.counters["claims"] = static_cast<double>(claims.size());
 }
-BENCHMARK(BM_TopologyProofEveryClaim)->DenseRange(0, 4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TopologyProofEveryClaim)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 
 // Random configurations of the four-bar, one claim with a point acceleration (the coupler
 // point's), solved and judged in arithmetic `a`: configurations per second. The exact and the

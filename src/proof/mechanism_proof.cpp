@@ -194,24 +194,27 @@ SymbolicMotion solve_symbolically(const MechanismScene& s, const SymbolicConfigu
 
 // p(x, delta) with delta = 1/det as a polynomial in x alone: det^k p, k the degree in delta. For
 // det != 0 it vanishes exactly where p does, so p is zero on the configurations iff this is.
-ex clear_delta(const ex& p, const SymbolicMotion& m) {
+// p with 1/det A for delta, times the least power det A^k that clears it: with c_i the
+// coefficient of delta^i (i = l..k), sum c_i det^(k-i), by Horner's rule. The expansions are the
+// normalizer's (its deadline; GiNaC's own expand of such products costs quadratically).
+ex clear_delta(const ex& p, const SymbolicMotion& m, RationalNormalizer& normalizer) {
   const ex e = GiNaC::expand(p);
   if (!e.has(m.delta)) return e;
-  const int k = e.degree(m.delta);
-  ex out = 0;
-  for (int i = e.ldegree(m.delta); i <= k; ++i) out += e.coeff(m.delta, i) * GiNaC::pow(m.det, k - i);
-  return GiNaC::expand(out);
+  ex out = e.coeff(m.delta, e.ldegree(m.delta));
+  for (int i = e.ldegree(m.delta) + 1; i <= e.degree(m.delta); ++i)
+    out = normalizer.expanded_sum({{out, m.det}, {e.coeff(m.delta, i), 1}});
+  return out;
 }
 
 // p reduced by s^2 = 1 - c^2 for every unit axis (c, s): zero iff p vanishes on the circles.
-ex reduce_on_circles(ex p, const std::vector<std::pair<ex, ex>>& axes) {
+ex reduce_on_circles(ex p, const std::vector<std::pair<ex, ex>>& axes, RationalNormalizer& normalizer) {
   for (const auto& [c, s] : axes) {
     p = GiNaC::expand(p);
     if (!p.has(s)) continue;
-    ex reduced = 0;
+    std::vector<std::pair<ex, ex>> products;
     for (int k = p.ldegree(s); k <= p.degree(s); ++k)
-      reduced += p.coeff(s, k) * GiNaC::pow(s, k % 2) * GiNaC::pow(1 - c * c, k / 2);
-    p = reduced;
+      products.emplace_back(p.coeff(s, k), GiNaC::expand(GiNaC::pow(s, k % 2) * GiNaC::pow(1 - c * c, k / 2)));
+    p = normalizer.expanded_sum(products);
   }
   return GiNaC::expand(p);
 }
@@ -462,9 +465,9 @@ class TopologyProver {
       bool uses_motion = false;
       for (const auto& [component, residual] : values.residuals) {
         uses_motion = uses_motion || residual.has(m.delta);
-        const ex numerator = clear_delta(normalizer.numerator(residual), m);
+        const ex numerator = clear_delta(normalizer.numerator(residual), m, normalizer);
         p.numerator_terms += static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(numerator) ? numerator.nops() : !numerator.is_zero());
-        const ex reduced = reduce_on_circles(numerator, config_.unit_axes);
+        const ex reduced = reduce_on_circles(numerator, config_.unit_axes, normalizer);
         if (!reduced.is_zero()) return disprove(claim, p, component, reduced);
       }
       p.argument.push_back(fmt::format(
@@ -482,11 +485,11 @@ class TopologyProver {
       std::vector<ex> divisors;
       if (uses_motion) divisors.push_back(m.det);
       for (auto& [poly, meaning] : claim_named) {
-        poly = clear_delta(normalizer.numerator(poly), m);
+        poly = clear_delta(normalizer.numerator(poly), m, normalizer);
         if (vanishes_on_circles(poly)) return undefined_everywhere(p, meaning);
         divisors.push_back(poly);
       }
-      for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(clear_delta(normalizer.numerator(d), m));
+      for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(clear_delta(normalizer.numerator(d), m, normalizer));
       const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
           divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
       if (!take_exceptions(p, factors, [&](const ex& f) { return vanishes_on_circles(f); })) return;
@@ -523,7 +526,7 @@ class TopologyProver {
     // A polynomial in the free rates that is 0 once the solved rates are put in.
     const auto vanishes = [&](const ex& poly) {
       RationalNormalizer solved(false);
-      return vanishes_on_circles(clear_delta(solved.numerator(poly.subs(m.solved_rates)), m));
+      return vanishes_on_circles(clear_delta(solved.numerator(poly.subs(m.solved_rates)), m, solved));
     };
     std::vector<ex> divisors;
     for (auto& [poly, meaning] : named) {  // the claim's divisors as written (see step 1)
@@ -552,7 +555,8 @@ class TopologyProver {
   }
 
   bool vanishes_on_circles(const ex& polynomial) const {
-    return reduce_on_circles(polynomial, config_.unit_axes).is_zero();
+    RationalNormalizer expansions(false);
+    return reduce_on_circles(polynomial, config_.unit_axes, expansions).is_zero();
   }
 
   void judge_on_samples(const MechanismDataClaim& claim, TopologyProof& p, const std::string& why) {

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
+#include <vector>
 
 namespace linkproof::proof_detail {
 
@@ -30,32 +32,64 @@ Fraction make(const ex& num, const ex& den, bool polynomial) {
 
 double terms(const ex& e) { return GiNaC::is_exactly_a<GiNaC::add>(e) ? static_cast<double>(e.nops()) : 1.0; }
 
-using SizeCheck = std::function<void(const ex&, const ex&)>;
+/// What a normalizer checks while it combines: a product's size before it is expanded (throws
+/// past the term limit), and the deadline between the partial products of one expansion.
+struct Limits {
+  std::function<void(const ex&, const ex&)> size;
+  std::function<void()> deadline;
+};
+
+/// The expanded sum of the products a_i b_i. Each term of a_i times b_i is expanded on its own and
+/// the partial products are combined once, at the end. GiNaC's expand of a product of two sums
+/// instead adds each partial product to the running result, a cost of |a| times the result's
+/// size, within one call that no deadline can interrupt (two 550-term sums in 12 symbols: 67 s,
+/// against 6.8 s here).
+ex expanded_sum(const std::vector<std::pair<ex, ex>>& products, const Limits& limits) {
+  GiNaC::exvector terms;
+  const auto append = [&terms](const ex& e) {
+    // An add's op() lists its numeric part too (its overall coefficient, last, if not 0).
+    if (GiNaC::is_exactly_a<GiNaC::add>(e))
+      for (size_t k = 0; k < e.nops(); ++k) terms.push_back(e.op(k));
+    else if (!e.is_zero())
+      terms.push_back(e);
+  };
+  for (const auto& [a, b] : products) {
+    if (!GiNaC::is_exactly_a<GiNaC::add>(a) || !GiNaC::is_exactly_a<GiNaC::add>(b)) {
+      append(GiNaC::expand(a * b));
+      continue;
+    }
+    for (size_t i = 0; i < a.nops(); ++i) {
+      append(GiNaC::expand(a.op(i) * b));
+      limits.deadline();
+    }
+  }
+  return GiNaC::dynallocate<GiNaC::add>(terms);
+}
 
 /// a/b + c/d over the common denominator, not yet cancelled (`cancel`: divide out gcd(b, d)).
-Fraction sum(const Fraction& a, const Fraction& b, bool cancel, const SizeCheck& check) {
+Fraction sum(const Fraction& a, const Fraction& b, bool cancel, const Limits& limits) {
   const bool poly = a.polynomial && b.polynomial;
   if (b.num.is_zero()) return a;
   if (a.num.is_zero()) return b;
   if (a.den.is_equal(b.den)) return make(GiNaC::expand(a.num + b.num), a.den, poly);
   ex ca, cb;  // a.den = g ca, b.den = g cb
   split_gcd(a.den, b.den, poly && cancel, ca, cb);
-  check(a.num, cb);
-  check(b.num, ca);
-  check(a.den, cb);
-  return make(GiNaC::expand(a.num * cb + b.num * ca), GiNaC::expand(a.den * cb), poly);
+  limits.size(a.num, cb);
+  limits.size(b.num, ca);
+  limits.size(a.den, cb);
+  return make(expanded_sum({{a.num, cb}, {b.num, ca}}, limits), expanded_sum({{a.den, cb}}, limits), poly);
 }
 
 /// (a/b)(c/d), with the cross gcds cancelled if `cancel`.
-Fraction product(const Fraction& a, const Fraction& b, bool cancel, const SizeCheck& check) {
+Fraction product(const Fraction& a, const Fraction& b, bool cancel, const Limits& limits) {
   const bool poly = a.polynomial && b.polynomial;
   if (a.num.is_zero() || b.num.is_zero()) return make(0, 1, poly);
   ex an, bd, bn, ad;
   split_gcd(a.num, b.den, poly && cancel, an, bd);
   split_gcd(b.num, a.den, poly && cancel, bn, ad);
-  check(an, bn);
-  check(ad, bd);
-  return make(GiNaC::expand(an * bn), GiNaC::expand(ad * bd), poly);
+  limits.size(an, bn);
+  limits.size(ad, bd);
+  return make(expanded_sum({{an, bn}}, limits), expanded_sum({{ad, bd}}, limits), poly);
 }
 
 Fraction cancelled(const Fraction& f, bool cancel) {
@@ -78,13 +112,13 @@ const Fraction& RationalNormalizer::normal(const ex& e) {
 Fraction RationalNormalizer::compute(const ex& e) {
   if (GiNaC::is_a<GiNaC::symbol>(e)) return make(e, 1, true);
   if (GiNaC::is_exactly_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational()) return make(e, 1, true);
-  const SizeCheck size_check = [this](const ex& a, const ex& b) { check_product_size(a, b); };
+  const Limits limits{[this](const ex& a, const ex& b) { check_product_size(a, b); }, [this] { check_deadline(); }};
   if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
     Fraction acc = make(0, 1, true);
     for (size_t i = 0; i < e.nops(); ++i) {
       const Fraction& term = normal(e.op(i));
       check_deadline();  // a memoized term is not checked by normal()
-      acc = sum(acc, term, cancel_, size_check);
+      acc = sum(acc, term, cancel_, limits);
     }
     return cancelled(acc, cancel_);
   }
@@ -93,7 +127,7 @@ Fraction RationalNormalizer::compute(const ex& e) {
     for (size_t i = 0; i < e.nops(); ++i) {
       const Fraction& factor = normal(e.op(i));
       check_deadline();
-      acc = product(acc, factor, cancel_, size_check);
+      acc = product(acc, factor, cancel_, limits);
     }
     return acc;
   }
@@ -126,6 +160,10 @@ void RationalNormalizer::check_product_size(const ex& a, const ex& b, int power)
   const double n = power == 1 ? terms(a) * terms(b) : std::pow(terms(a), power);
   if (n > term_limit_)
     throw NormalizerOutOfTime{fmt::format("an expansion of up to {:.3g} terms exceeds the limit of {:.3g}", n, term_limit_)};
+}
+
+GiNaC::ex RationalNormalizer::expanded_sum(const std::vector<std::pair<ex, ex>>& products) {
+  return proof_detail::expanded_sum(products, {[](const ex&, const ex&) {}, [this] { check_deadline(); }});
 }
 
 GiNaC::ex RationalNormalizer::numerator(const ex& e) {

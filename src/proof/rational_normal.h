@@ -23,6 +23,8 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "core/modular_point.h"
 
@@ -62,6 +64,10 @@ class RationalNormalizer {
   bool is_zero(const GiNaC::ex& e);
   /// d e / d s is identically zero (from the normal form N/D: N' D - N D' = 0).
   bool is_constant_in(const GiNaC::ex& e, const GiNaC::symbol& s);
+  /// The expanded sum of the products a_i b_i of `products`, under this normalizer's deadline
+  /// (checked between partial products; the term limit is not applied: such an expansion can be
+  /// stopped at the deadline).
+  GiNaC::ex expanded_sum(const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& products);
 
  private:
   Fraction compute(const GiNaC::ex& e);

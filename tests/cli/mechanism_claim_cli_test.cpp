@@ -28,7 +28,8 @@ const std::vector<Pair>& pairs() {
       {"verify/claims/mechanisms/fourbar.yaml", "verify/scenes/mechanisms/seed001_fourbar.yaml"},
       {"verify/claims/mechanisms/inverted_slider_crank.yaml", "verify/scenes/mechanisms/inverted_slider_crank.yaml"},
       {"verify/claims/mechanisms/slider_crank.yaml", "verify/scenes/mechanisms/dimensions_slider_crank.yaml"},
-      {"verify/claims/mechanisms/sixbar_watt.yaml", "verify/scenes/mechanisms/pmks_watt_i_0.yaml"}};
+      {"verify/claims/mechanisms/sixbar_watt.yaml", "verify/scenes/mechanisms/pmks_watt_i_0.yaml"},
+      {"verify/claims/mechanisms/sixbar_stephenson.yaml", "verify/scenes/mechanisms/pmks_stephenson_iii_example_2_0.yaml"}};
   return p;
 }
 
