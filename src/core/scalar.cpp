@@ -38,6 +38,13 @@ bool is_small_fraction(const Rational& q) {
 
 }  // namespace
 
+bool as_small_fraction(const Rational& q, double& p, double& d) {
+  if (!is_small_fraction(q)) return false;
+  p = static_cast<double>(cln::cl_I_to_long(cln::numerator(q)));
+  d = static_cast<double>(cln::cl_I_to_long(cln::denominator(q)));
+  return true;
+}
+
 /// Correctly rounded (to nearest, ties to even): cln::double_approx is only an approximation,
 /// so its neighbours are compared exactly.
 template <>

@@ -17,6 +17,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "linkproof/core/exact.h"
 #include "core/tracked.h"
@@ -81,8 +82,23 @@ struct ScalarTraits<Tracked<F>> {
   static std::string to_string(const Tracked<F>& x) { return ScalarTraits<F>::to_string(x.v); }
 };
 
+/// q = p/d with |p|, d < 2^53 (both exact in double), or false: the fast path of from_rational.
+bool as_small_fraction(const Rational& q, double& p, double& d);
+
 template <class F>
 Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {
+  if constexpr (std::is_same_v<F, double>) {
+    // The coordinates and rates of random configurations are such fractions: no exact
+    // arithmetic. The IEEE quotient is correctly rounded; the remainder p - v d of a correctly
+    // rounded quotient is a double (no underflow: |v| >= 2^-53) and fma computes it exactly, so
+    // |q - v| = |r| / d, rounded up.
+    double p = 0, d = 1;
+    if (as_small_fraction(q, p, d)) {
+      const double v = p / d;
+      const double r = std::fma(-v, d, p);
+      return {v, r == 0 ? 0.0 : next_up(std::abs(r) / d)};
+    }
+  }
   F v = ScalarTraits<F>::from_rational(q);
   if constexpr (Traits::has_infinity) {
     if (!std::isfinite(v)) return {v, Traits::unbounded()};

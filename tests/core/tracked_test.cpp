@@ -5,6 +5,8 @@
 
 #include <cln/integer.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <random>
 
 #include "claims/polygon_context.h"
@@ -244,6 +246,36 @@ void expect_from_int_is_from_rational() {
 TEST(TrackedFromInt, SmallIntegersAreExactWithZeroRadiusAsThroughARational) {
   expect_from_int_is_from_rational<double>();
   expect_from_int_is_from_rational<long double>();
+}
+
+// The fast path of Tracked<double>::from_rational for p/q with |p|, q < 2^53 (IEEE division and an
+// exact fma remainder, no CLN arithmetic) against the exact rounding error: the same midpoint as
+// round_rational, a radius that is >= |q - v|, 0 exactly when v = q, and at most one step above
+// the exact error rounded to nearest.
+TEST(TrackedFromRational, SmallFractionsGetTheCorrectlyRoundedMidpointAndTheExactErrorRoundedUp) {
+  const unsigned seed = 20261127;
+  std::mt19937_64 g(seed);
+  const std::int64_t top = std::int64_t{1} << 53;
+  for (int i = 0; i < 20000; ++i) {
+    // Small and large numerators and denominators, powers of two among them.
+    const int pb = 1 + static_cast<int>(g() % 53), qb = 1 + static_cast<int>(g() % 53);
+    std::int64_t p = static_cast<std::int64_t>(g() % static_cast<std::uint64_t>(std::int64_t{1} << pb));
+    std::int64_t d = 1 + static_cast<std::int64_t>(g() % static_cast<std::uint64_t>((std::int64_t{1} << qb) - 1));
+    if (i % 7 == 0) d = std::int64_t{1} << (g() % 53);
+    if (g() % 2) p = -p;
+    ASSERT_LT(std::abs(p), top);
+    ASSERT_LT(d, top);
+    const Rational q = Rational(cln::cl_I(static_cast<long>(p))) / cln::cl_I(static_cast<long>(d));
+    const Tracked<double> t = from_rational<Tracked<double>>(q);
+    const double v = round_rational<double>(q);
+    const Rational err = cln::abs(q - exact_value_of(t.v));
+    ASSERT_EQ(t.v, v) << "seed " << seed << ", " << p << "/" << d;
+    ASSERT_GE(exact_value_of(t.e), err) << "seed " << seed << ", " << p << "/" << d;
+    ASSERT_EQ(t.e == 0, cln::zerop(err)) << "seed " << seed << ", " << p << "/" << d;
+    if (!cln::zerop(err)) {
+      ASSERT_LE(t.e, next_up(next_up(round_rational<double>(err)))) << p << "/" << d;
+    }
+  }
 }
 
 }  // namespace
