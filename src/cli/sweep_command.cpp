@@ -34,7 +34,7 @@ SweepOptions sweep_options_or_throw(const SweepArgs& a) {
 
 void add_sweep_options(CLI::App* s, SweepArgs& a) {
   s->add_option("--n", a.n_range, "number of sides, N or A..B (default 4..12)");
-  s->add_option("--count", a.count, "cases per n (default 100)");
+  s->add_option("--count", a.count, "cases per n (default 100); with --topology: the configurations drawn");
   s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)")->check(seed_validator());
   s->add_option("--arith", a.arith,
                 "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
