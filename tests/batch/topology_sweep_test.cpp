@@ -134,15 +134,15 @@ TEST(SweepTopology, ResumeAfterAKilledRunGivesTheSameReport) {
 TEST(SweepTopology, ResumeAfterSigkillOfALongerRunGivesTheBytesOfOneRun) {
   const std::string dir = fresh_dir("topology_sweep_sigkill");
   const std::string ref_file = dir + "/ref.jsonl", file = dir + "/r.jsonl";
-  const pid_t child = test::spawn_cli(sweep_of("1000", "5", {"--jobs", "2", "--out", file}));
+  const pid_t child = test::spawn_cli(sweep_of("600", "5", {"--jobs", "2", "--out", file}));
   int code = 0;
   if (!test::wait_for_lines(file, 20, child, code)) GTEST_SKIP() << "the sweep ended (exit " << code << ") first";
   ::kill(child, SIGKILL);
   EXPECT_EQ(test::wait_child(child), 128 + SIGKILL);
   if (read_file(file).find("\"summary\"") != std::string::npos) GTEST_SKIP() << "the sweep finished before SIGKILL";
-  const auto resumed = run_cli(sweep_of("1000", "5", {"--jobs", "2", "--out", file, "--resume", "--json"}));
+  const auto resumed = run_cli(sweep_of("600", "5", {"--jobs", "2", "--out", file, "--resume", "--json"}));
   ASSERT_EQ(resumed.code, 0) << resumed.err;
-  const auto one = run_cli(sweep_of("1000", "5", {"--jobs", "1", "--out", ref_file, "--json"}));
+  const auto one = run_cli(sweep_of("600", "5", {"--jobs", "1", "--out", ref_file, "--json"}));
   ASSERT_EQ(one.code, 0) << one.err;
   EXPECT_EQ(read_file(file), read_file(ref_file));
   EXPECT_EQ(without_seconds(resumed.out), without_seconds(one.out));
