@@ -7,13 +7,15 @@
 // Whatever the number of jobs, the shard, or how often the run was interrupted and resumed,
 // the cases are folded in case order (check/sweep_tally.h), so the report and the result file
 // are the same bytes as those of one uninterrupted single-process run (the report's `seconds`
-// excepted: it is the time of this run). Result file format: report/sweep_lines.h.
+// excepted: it is the time of this run). Result file format: report/sweep_lines.h. The batch
+// machinery is batch/batch_run.h's; the polygon cases are batch/polygon_sweep_job.h's.
 #pragma once
 
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "batch/batch_run.h"
 #include "check/sweep.h"
 #include "report/sweep_lines.h"
 
@@ -32,15 +34,10 @@ struct BatchSweepOptions {
   SweepExitStatus exit_status;
 };
 
-struct BatchSweepResult {
-  enum class Status { Complete, Interrupted, OutOfTime, WorkerFailed };
-  Status status = Status::Complete;
-  SweepReport report;      ///< of every case done, read back or computed
-  int signal = 0;          ///< Interrupted: the signal
-  std::string message;     ///< not Complete: what happened (how to continue is the caller's to say)
-  long cases_resumed = 0;  ///< cases read back from the result file
-  long cases_run = 0;      ///< cases computed by this run
-  bool already_complete = false;  ///< the result file already held the summary line
+/// How the run ended (batch/batch_run.h) and the report of every case done, read back or
+/// computed.
+struct BatchSweepResult : BatchRun {
+  SweepReport report;
 };
 
 /// Runs (or continues) the sweep. InputError for a bad `out` or `scenes_dir` path (fields "result

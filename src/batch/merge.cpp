@@ -8,8 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "batch/batch_sweep.h"
-#include "batch/case_sink.h"
+#include "batch/polygon_sweep_job.h"
 
 namespace linkproof {
 
@@ -54,85 +53,133 @@ std::pair<SweepOptions, Shard> sweep_of_summary(const json& s, const std::string
   const auto a = parse_arithmetic(text_field(s, "arithmetic", file));
   if (!a) throw InputError(file, "summary.arithmetic", "unknown arithmetic");
   o.arithmetic = *a;
+  return {o, shard_of_summary(s, file)};
+}
+
+Shard shard_of_summary(const json& s, const std::string& file) {
   Shard shard;
   if (s.contains("shard")) {
     const std::string k = text_field(s, "shard", file);
     if (std::sscanf(k.c_str(), "%d/%d", &shard.k, &shard.n) != 2 || shard.n < 1 || shard.k < 1 || shard.k > shard.n)
       throw InputError(file, "summary.shard", "must be \"K/N\" with 1 <= K <= N, not " + k);
   }
-  return {o, shard};
+  return shard;
 }
+
+void merge_batch_lines(BatchJob& job, long size, int shards,
+                       const std::function<std::optional<std::string>(int)>& next_line,
+                       const std::function<std::string(int)>& source, const std::string& out) {
+  std::unique_ptr<ResultFile> file;
+  if (!out.empty()) file = std::make_unique<ResultFile>(out, false, [](const std::string&, long) {});
+  job.set_file(file.get());
+  std::vector<long> line_numbers(static_cast<size_t>(shards), 0);
+  // The next line of shard s: true if it is a case line (pending in the job), false at the end
+  // of the shard or at its summary line.
+  auto read = [&](int s) -> std::optional<bool> {
+    const auto text = next_line(s);
+    if (!text) return std::nullopt;
+    return !job.read(*text, source(s), ++line_numbers[static_cast<size_t>(s)]);
+  };
+  for (long k = 0; k < size; ++k) {
+    const int s = static_cast<int>(k % shards);
+    const std::string where = fmt::format("line {}", line_numbers[static_cast<size_t>(s)] + 1);
+    const auto is_case = read(s);
+    if (!is_case || !*is_case)
+      throw InputError(source(s), where, fmt::format("case {} expected: shard {}/{} is incomplete", k, s + 1, shards));
+    job.take_merged(k, source(s), where);
+  }
+  for (int s = 0; s < shards; ++s) {
+    const auto is_case = read(s);
+    if (!is_case || *is_case)
+      throw InputError(source(s), fmt::format("line {}", line_numbers[static_cast<size_t>(s)]),
+                       "the shard's summary line expected after its last case");
+    if (read(s)) throw InputError(source(s), "<end>", "lines after the summary line");
+  }
+  if (file) file->append(job.summary_line(Shard{}));
+  job.set_file(nullptr);
+}
+
+namespace {
+
+// The polygon sweep `o` merged by `merge` into a job of its cases: the report.
+SweepReport merge_polygon_sweep(const std::vector<Claim>& catalogue, const SweepOptions& o, const std::string& scenes_dir,
+                                const SweepExitStatus& exit_status, const std::function<void(BatchJob&)>& merge) {
+  const auto start = std::chrono::steady_clock::now();
+  BatchSweepOptions b;
+  b.sweep = o;
+  b.scenes_dir = scenes_dir;
+  b.exit_status = exit_status;
+  PolygonSweepJob job(catalogue, b);
+  merge(job);
+  SweepReport r = job.report();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace
 
 SweepReport merge_shard_lines(const std::vector<Claim>& catalogue, const SweepOptions& o, int shards,
                               const std::function<std::optional<std::string>(int)>& next_line,
                               const std::function<std::string(int)>& source, const std::string& out,
                               const std::string& scenes_dir, const SweepExitStatus& exit_status) {
-  const auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<ResultFile> file;
-  if (!out.empty()) file = std::make_unique<ResultFile>(out, false, [](const std::string&, long) {});
-  CaseSink sink(catalogue, o, file.get(), scenes_dir);
-  std::vector<long> line_numbers(static_cast<size_t>(shards), 0);
-  auto read = [&](int s) -> std::optional<SweepLine> {
-    const auto text = next_line(s);
-    if (!text) return std::nullopt;
-    return parse_sweep_line(*text, source(s), ++line_numbers[static_cast<size_t>(s)]);
-  };
-  const long size = SweepPlan(o).size();
-  for (long k = 0; k < size; ++k) {
-    const int s = static_cast<int>(k % shards);
-    const std::string where = fmt::format("line {}", line_numbers[static_cast<size_t>(s)] + 1);
-    auto line = read(s);
-    if (!line || !line->sweep_case)
-      throw InputError(source(s), where, fmt::format("case {} expected: shard {}/{} is incomplete", k, s + 1, shards));
-    check_case_identity(*line, k, o, catalogue, source(s), where);
-    sink.add(*line->sweep_case, true, source(s), where);
-  }
-  for (int s = 0; s < shards; ++s) {
-    auto line = read(s);
-    if (!line || !line->summary)
-      throw InputError(source(s), fmt::format("line {}", line_numbers[static_cast<size_t>(s)]),
-                       "the shard's summary line expected after its last case");
-    if (read(s)) throw InputError(source(s), "<end>", "lines after the summary line");
-  }
-  if (file) file->append(sweep_summary_line(sink.tally().report(), Shard{}, exit_status(sink.tally().report())));
-  SweepReport r = sink.tally().report();
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  return merge_polygon_sweep(catalogue, o, scenes_dir, exit_status, [&](BatchJob& job) {
+    merge_batch_lines(job, SweepPlan(o).size(), shards, next_line, source, out);
+  });
 }
 
-SweepReport merge_sweep_files(const std::vector<Claim>& catalogue, const std::vector<std::string>& files,
-                              const std::string& out, const std::string& scenes_dir, const SweepExitStatus& exit_status) {
+std::vector<std::string> shard_files_in_order(const std::vector<std::string>& files, const SummaryOf& summary_of,
+                                              const SweepOf& sweep_of) {
   if (files.empty()) throw InputError("<command line>", "FILES", "no shard files given");
-  std::optional<SweepOptions> sweep;
+  std::optional<std::string> sweep;
   std::map<int, std::string> by_shard;  // K - 1 -> file
   int shards = 0;
   for (const auto& f : files) {
     const std::string last = last_line(f);
-    SweepLine line = last.empty() ? SweepLine{} : parse_sweep_line(last, f, 0);
-    if (!line.summary) throw InputError(f, "<last line>", "no summary line: the shard is incomplete (its sweep stopped before the end: resume that sweep "
+    const std::optional<json> summary = last.empty() ? std::nullopt : summary_of(last, f);
+    if (!summary) throw InputError(f, "<last line>", "no summary line: the shard is incomplete (its sweep stopped before the end: resume that sweep "
                                                      "to complete the file)");
-    auto [o, shard] = sweep_of_summary(*line.summary, f);
-    if (sweep && (o.seed != sweep->seed || o.n_min != sweep->n_min || o.n_max != sweep->n_max ||
-                  o.count != sweep->count || o.arithmetic != sweep->arithmetic || shard.n != shards))
+    auto [key, shard] = sweep_of(*summary, f);
+    if (sweep && (key != *sweep || shard.n != shards))
       throw InputError(f, "summary", fmt::format("is a shard of another sweep than {}", files.front()));
     if (by_shard.count(shard.k - 1)) throw InputError(f, "summary.shard", "shard given twice (also " + by_shard[shard.k - 1] + ")");
-    sweep = o;
+    sweep = key;
     shards = shard.n;
     by_shard[shard.k - 1] = f;
   }
   if (static_cast<int>(by_shard.size()) != shards)
     throw InputError(files.front(), "summary.shard",
                      fmt::format("{} of {} shards given; every shard 1..{} is needed", by_shard.size(), shards, shards));
+  std::vector<std::string> ordered;
+  for (int s = 0; s < shards; ++s) ordered.push_back(by_shard[s]);
+  return ordered;
+}
+
+void merge_batch_files(BatchJob& job, long size, const std::vector<std::string>& shard_files, const std::string& out) {
   std::vector<std::unique_ptr<std::ifstream>> in;
-  for (int s = 0; s < shards; ++s) in.push_back(std::make_unique<std::ifstream>(by_shard[s], std::ios::binary));
-  return merge_shard_lines(
-      catalogue, *sweep, shards,
+  for (const std::string& f : shard_files) in.push_back(std::make_unique<std::ifstream>(f, std::ios::binary));
+  merge_batch_lines(
+      job, size, static_cast<int>(shard_files.size()),
       [&](int s) -> std::optional<std::string> {
         std::string line;
         if (std::getline(*in[static_cast<size_t>(s)], line)) return line;
         return std::nullopt;
       },
-      [&](int s) { return by_shard[s]; }, out, scenes_dir, exit_status);
+      [&](int s) { return shard_files[static_cast<size_t>(s)]; }, out);
+}
+
+SweepReport merge_sweep_files(const std::vector<Claim>& catalogue, const std::vector<std::string>& files,
+                              const std::string& out, const std::string& scenes_dir, const SweepExitStatus& exit_status) {
+  std::optional<SweepOptions> sweep;
+  const std::vector<std::string> ordered = shard_files_in_order(
+      files, [](const std::string& line, const std::string& f) { return parse_sweep_line(line, f, 0).summary; },
+      [&](const json& summary, const std::string& f) {
+        auto [o, shard] = sweep_of_summary(summary, f);
+        if (!sweep) sweep = o;
+        return std::pair{fmt::format("{} {} {} {} {}", o.seed, o.n_min, o.n_max, o.count, to_string(o.arithmetic)), shard};
+      });
+  return merge_polygon_sweep(catalogue, *sweep, scenes_dir, exit_status, [&](BatchJob& job) {
+    merge_batch_files(job, SweepPlan(*sweep).size(), ordered, out);
+  });
 }
 
 }  // namespace linkproof

@@ -34,14 +34,22 @@ int exit_status(const SweepReport& sweep) {
   return sweep.unexpected_failures() > 0 ? kClaimFailed : kAsExpected;
 }
 
-int exit_status(const BatchSweepResult& r) {
-  switch (r.status) {
-    case BatchSweepResult::Status::Complete: return exit_status(r.report);
-    case BatchSweepResult::Status::Interrupted: return 128 + r.signal;
-    case BatchSweepResult::Status::OutOfTime: return kBadInput;
-    case BatchSweepResult::Status::WorkerFailed: return kInternalError;
+int exit_status(const BatchRun& run, int complete) {
+  switch (run.status) {
+    case BatchRun::Status::Complete: return complete;
+    case BatchRun::Status::Interrupted: return 128 + run.signal;
+    case BatchRun::Status::OutOfTime: return kBadInput;
+    case BatchRun::Status::WorkerFailed: return kInternalError;
   }
   return kInternalError;
+}
+
+int exit_status(const BatchSweepResult& r) { return exit_status(r, exit_status(r.report)); }
+
+ClaimsStatus topology_sweep_status(const TopologySweepReport& report) { return sampling_status(report.run, false); }
+
+int exit_status(const TopologyBatchResult& r) {
+  return exit_status(r, topology_sweep_status(r.report).exit_status);
 }
 
 int exit_status(const DataCheck& check) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "batch/batch_sweep.h"
+#include "batch/topology_sweep_job.h"
 #include "check/sweep.h"
 #include "count/count_claim.h"
 #include "linkproof/check/check.h"
@@ -42,6 +43,15 @@ int exit_status(const SweepReport& sweep);
 /// A batch sweep: the report's status when complete; 128 + signal when interrupted; 2 when
 /// stopped by the time budget (--max-seconds); 3 when a worker failed.
 int exit_status(const BatchSweepResult& result);
+/// A batch run that ended as `run` says: `complete` when it completed, else as above.
+int exit_status(const BatchRun& run, int complete);
+
+/// A sweep of a topology (sweep --topology): as check-claim --topology --count (sampling_status,
+/// without --strict): a true claim holding on the samples and a claim expected to fail disproved
+/// are as expected; exit 1 if a claim is not.
+ClaimsStatus topology_sweep_status(const TopologySweepReport& report);
+/// ... run as a batch job: its status when complete, else as a polygon sweep's batch run.
+int exit_status(const TopologyBatchResult& result);
 
 /// check-data: 0 when every sample is consistent, at least one value was compared and every
 /// compared value agrees (a sample with nothing recorded does not count against it); 1

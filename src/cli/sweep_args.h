@@ -5,10 +5,13 @@
 
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string>
 
 #include "command.h"
 #include "check/sweep.h"
+#include "batch/batch_run.h"
+#include "batch/result_file.h"
 #include "report/sweep_lines.h"
 
 namespace linkproof::cli {
@@ -26,6 +29,40 @@ struct SweepArgs {
   std::string out;     ///< --out FILE
   std::string scenes;  ///< --scenes DIR
 };
+
+/// The options of `linkproof sweep` (polygons, or with --topology a mechanism topology).
+struct SweepCommandArgs : SweepArgs {
+  std::optional<int> jobs;
+  bool resume = false;
+  std::string shard;
+  bool n_given = false;   ///< --n was on the command line
+  std::string topology;   ///< --topology SCENE: a sweep of the scene's topology
+  std::string claims;     ///< --claims CLAIMS: its mechanism claims
+};
+
+/// `linkproof sweep --topology SCENE --claims CLAIMS ...` (topology_sweep_command.cpp).
+int run_topology_sweep_command(const SweepCommandArgs& args, std::ostream& out, std::ostream& err);
+
+/// The digest of a file's bytes (sweep_line_digest), naming `option` if it cannot be read.
+std::string file_digest(const std::string& path, const std::string& option);
+
+/// Runs `work()` (a sweep or merge writing --out) and names the command line's options in its
+/// InputErrors: an existing --out (ResultFileExists) with the hint to pass --resume.
+template <class Work>
+decltype(auto) naming_sweep_options(Work&& work) {
+  try {
+    return work();
+  } catch (const ResultFileExists& e) {
+    throw InputError(e.source(), "--out", e.problem() + "; pass --resume to continue it, or remove it");
+  } catch (const InputError& e) {
+    rethrow_naming_option(e, kSweepOptionNames);
+  }
+}
+
+/// A sweep that stopped before its end (interrupted, out of time, a worker failed): says how to
+/// continue (with the result file `out`, if any) and returns `code`, its exit status; a stop by
+/// the time budget is an InputError naming --max-seconds.
+int report_stopped_sweep(const BatchRun& run, const std::string& out, std::ostream& err, int code);
 
 /// Declares --n, --count, --seed, --arith, --out, --scenes and --json on `app`.
 void add_sweep_options(CLI::App* app, SweepArgs& args);

@@ -1,5 +1,7 @@
 // linkproof sweep --n 4..12 --count N --seed S [--arith ...] [--index I] [--json]
 //                 [--jobs N] [--out FILE [--resume]] [--shard K/N] [--scenes DIR]
+// linkproof sweep --topology SCENE --claims CLAIMS --count K [--seed S] [--arith A] [--json]
+//                 [--jobs N] [--out FILE [--resume]] [--shard K/N]   (topology_sweep_command.cpp)
 #include <unistd.h>
 
 #include <cstdio>
@@ -32,7 +34,7 @@ SweepOptions sweep_options_or_throw(const SweepArgs& a) {
 
 void add_sweep_options(CLI::App* s, SweepArgs& a) {
   s->add_option("--n", a.n_range, "number of sides, N or A..B (default 4..12)");
-  s->add_option("--count", a.count, "cases per n (default 100)");
+  s->add_option("--count", a.count, "cases per n (default 100); with --topology: the configurations drawn");
   s->add_option("--seed", a.seed, "seed; any case replays from seed, n and index (default 1)")->check(seed_validator());
   s->add_option("--arith", a.arith,
                 "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
@@ -50,15 +52,21 @@ Shard parse_shard(const std::string& s) {
   return shard;
 }
 
+int report_stopped_sweep(const BatchRun& r, const std::string& out, std::ostream& err, int code) {
+  // How to continue: the options are this command's, so the hint is written here.
+  const std::string hint = out.empty() ? "; nothing was saved (--out FILE keeps every completed case)"
+                                       : fmt::format("; {} holds every completed case: rerun the same command "
+                                                     "with --resume to continue",
+                                                     out);
+  if (r.status == BatchRun::Status::OutOfTime) throw InputError("<command line>", "--max-seconds", r.message + hint);
+  fmt::print(err, "linkproof sweep: {}{}\n", r.message, hint);
+  return code;
+}
+
 namespace {
 
-struct SweepCommandArgs : SweepArgs {
-  std::optional<int> jobs;
-  bool resume = false;
-  std::string shard;
-};
-
 int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream& err) {
+  if (!a.topology.empty() || !a.claims.empty()) return run_topology_sweep_command(a, out, err);
   BatchSweepOptions b;
   b.sweep = sweep_options_or_throw(a);
   b.jobs = a.jobs.value_or(default_jobs());
@@ -73,34 +81,24 @@ int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream
     throw InputError("<command line>", "--index", "replays one case; it cannot be combined with --out or --shard");
   // The bar only on the real stderr, and only when it is a terminal.
   if (&err == &std::cerr && ::isatty(STDERR_FILENO)) b.progress = &err;
-  BatchSweepResult r;
-  try {
-    r = run_batch_sweep(dijksman1966::catalogue(), b);
-  } catch (const ResultFileExists& e) {
-    throw InputError(e.source(), "--out", e.problem() + "; pass --resume to continue it, or remove it");
-  } catch (const InputError& e) {
-    rethrow_naming_option(e, kSweepOptionNames);
-  }
-  if (r.status != BatchSweepResult::Status::Complete) {
-    // How to continue: the options are this command's, so the hint is written here.
-    const std::string hint = a.out.empty() ? "; nothing was saved (--out FILE keeps every completed case)"
-                                           : fmt::format("; {} holds every completed case: rerun the same command "
-                                                         "with --resume to continue",
-                                                         a.out);
-    if (r.status == BatchSweepResult::Status::OutOfTime)
-      throw InputError("<command line>", "--max-seconds", r.message + hint);
-    fmt::print(err, "linkproof sweep: {}{}\n", r.message, hint);
-    return exit_status(r);
-  }
+  const BatchSweepResult r = naming_sweep_options([&] { return run_batch_sweep(dijksman1966::catalogue(), b); });
+  if (r.status != BatchSweepResult::Status::Complete) return report_stopped_sweep(r, a.out, err, exit_status(r));
   return print_report(out, r.report, a.json, exit_status(r));
 }
 
 }  // namespace
 
 void add_sweep_command(CLI::App& app, Action& action) {
-  auto* s = app.add_subcommand("sweep", "check every claim on random exact polygons");
+  auto* s = app.add_subcommand("sweep",
+                               "check every claim on random exact polygons, or (--topology --claims) mechanism claims on "
+                               "random configurations of a topology");
   auto& a = bind_action<SweepCommandArgs>(s, action, run_sweep_command);
   add_sweep_options(s, a);
+  s->get_option("--n")->each([&a](const std::string&) { a.n_given = true; });
+  s->add_option("--topology", a.topology,
+                "sweep the configurations 0..K-1 (--count K) of this mechanism scene's topology instead of polygons; "
+                "with --claims");
+  s->add_option("--claims", a.claims, "with --topology: the mechanism claim file judged on every configuration");
   s->add_option("--index", a.index, "replay only this case index");
   s->add_option("--jobs", a.jobs, "worker processes (default: every core); the output does not depend on it");
   s->add_flag("--resume", a.resume, "continue --out FILE from its last complete case (after a kill or a crash)");

@@ -1,269 +1,13 @@
 #include "proof/mechanism_sampling.h"
 
-#include <cln/integer.h>
 #include <fmt/format.h>
 
 #include <chrono>
 #include <map>
 
-#include "check/arithmetic_types.h"
-#include "check/judge.h"
-#include "check/random_polygon.h"
-#include "linkproof/io/mechanism_scene.h"
-#include "mechanism/mechanism_data_claim.h"
-#include "mechanism/mechanism_vector_route.h"
-#include "proof/topology_layout.h"
+#include "proof/topology_configurations.h"
 
 namespace linkproof {
-
-namespace {
-
-// Rational unit directions (Pythagorean triples): |u| = 1 exactly, so sliding_v is rational.
-const Vec2<Rational> kUnitDirections[] = {
-    {1, 0}, {Rational(3) / 5, Rational(4) / 5}, {Rational(5) / 13, Rational(12) / 13}, {Rational(8) / 17, Rational(15) / 17}};
-
-using Layout = TopologyLayout;
-
-using Config = TopologyValues;
-
-MechanismScene build_scene(const MechanismScene& topology, const Layout& layout, const Config& c, const std::string& name) {
-  return topology_configuration(topology, layout, c, name);
-}
-
-Rational random_rate(SplitMix64& rng, bool nonzero) {
-  long p = rng.uniform(-9, 9);
-  if (nonzero && p == 0) p = 1;
-  return Rational(p) / Rational(rng.uniform(1, 4));
-}
-
-Config random_config(const MechanismScene& topology, const Layout& layout, std::uint64_t seed, int index, int range) {
-  SplitMix64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index) * 0xBF58476D1CE4E5B9ull + 0x51ull);
-  Config c;
-  for (int g = 0; g < layout.groups(); ++g) c.positions.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});
-  for (const LinkageJoint& j : topology.linkage.joints()) {
-    Vec2<Rational> u = kUnitDirections[rng.uniform(0, 3)];
-    if (rng.uniform(0, 1)) u = {u.y, u.x};
-    for (long turn = rng.uniform(0, 3); turn > 0; --turn) u = perp(u);
-    c.axes.push_back(j.type == JointType::Prismatic ? u : Vec2<Rational>{0, 0});
-  }
-  for (size_t k = 0; k < topology.inputs.size(); ++k) {
-    c.rate.push_back(random_rate(rng, true));
-    c.rate_dot.push_back(random_rate(rng, false));
-  }
-  return c;
-}
-
-// The exact motion by the rigid-body route; nullopt for a singular velocity system.
-std::optional<MechanismSolution<Rational>> solve(const MechanismScene& s) {
-  try {
-    return solve_mechanism<Rational>(
-        s.linkage, s.inputs, rigid_body_constraint_matrix<Rational>(s.linkage),
-        [&](const std::vector<Rational>& qd) { return rigid_body_acceleration_rhs<Rational>(s.linkage, qd); }, s.source);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
-}
-
-// Fails / Holds / Undefined of one claim on one solved configuration (no evidence kept).
-Verdict quick_verdict(const MechanismDataClaim& claim, const MechanismFrame& frame, std::string* quantity,
-                      std::string* reason) {
-  const ClaimSides<Rational> sides = evaluate_mechanism_claim(claim, frame);
-  Verdict v = Verdict::Holds;
-  for (const auto& c : sides.instances) {
-    if (!c.lhs.has_value() || !c.rhs.has_value()) {
-      const auto& u = c.lhs.has_value() ? c.rhs : c.lhs;
-      if (quantity && quantity->empty()) *quantity = u.quantity(), *reason = u.reason();
-      v = combine(v, Verdict::Undefined);
-    } else {
-      v = combine(v, c.lhs.get() == c.rhs.get() ? Verdict::Holds : Verdict::Fails);
-    }
-  }
-  return v;
-}
-
-// True if the scene reader accepts the configuration as written: it refuses some configurations
-// the solver accepts (a driven link whose two joints coincide), and a counterexample must replay.
-bool is_readable(const MechanismScene& s) {
-  try {
-    parse_mechanism_scene(mechanism_scene_to_yaml(s), s.source);
-    return true;
-  } catch (const InputError&) {
-    return false;
-  }
-}
-
-// The verdict of one claim on a configuration solved in a floating arithmetic T (Tracked<F>):
-// every comparison judged with its derived bound; the first inconclusive one's reason is kept.
-template <class T>
-Verdict floating_verdict(const MechanismDataClaim& claim, const MechanismFrameOf<T>& frame, SampleResult& r) {
-  Verdict v = Verdict::Holds;
-  try {
-    const ClaimSides<T> sides = evaluate_mechanism_claim(claim, frame);
-    for (const Comparison<T>& c : sides.instances) {
-      const ComparisonOutcome o = judge(c);
-      if (o.verdict == Verdict::Undefined && r.undefined_quantity.empty())
-        r.undefined_quantity = o.undefined_quantity, r.undefined_reason = o.reason;
-      if (o.verdict == Verdict::Inconclusive && !r.first_inconclusive) r.first_inconclusive = o;
-      v = combine(v, o.verdict);
-    }
-  } catch (const cln::floating_point_exception& e) {  // e.g. an exponent overflow of a CLN float
-    if (!r.first_inconclusive) {
-      ComparisonOutcome o;
-      o.label = "total";
-      o.verdict = Verdict::Inconclusive;
-      o.reason = e.what();
-      r.first_inconclusive = std::move(o);
-    }
-    return Verdict::Inconclusive;
-  }
-  return v;
-}
-
-// The verdict of each open claim (not `done`) on configuration s, solved and judged in T, each
-// claim's time added to `seconds`; nullopt where s is singular in T. A floating failure is
-// confirmed exactly: the bounds are rigorous, so the exact sides must differ, and the
-// counterexample that is shrunk and written is an exact one.
-template <class T>
-std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene& topology, const Layout& layout,
-                                                           const Config& config, const std::string& name,
-                                                           const std::vector<MechanismDataClaim>& claims,
-                                                           const std::vector<bool>& done,
-                                                           std::vector<SampleResult>& results,
-                                                           std::vector<double>& seconds) {
-  using Clock = std::chrono::steady_clock;
-  // Solved from the values in T alone (the topology's linkage, the configuration's geometry):
-  // the scene is built only for a failure, which must be confirmed and replayed.
-  const TopologyValuesIn<T> values = topology_values_in<T>(topology, layout, config);
-  const JointGeometry<T> geo = values.geometry();
-  const Linkage& g = topology.linkage;
-  std::optional<MechanismSolution<T>> solution;
-  try {
-    solution = solve_mechanism<T>(
-        g, topology.inputs, rigid_body_constraint_matrix<T>(g, geo),
-        [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, geo); }, name,
-        &values.inputs, geo);
-  } catch (const InputError&) {
-    return std::nullopt;
-  } catch (const cln::floating_point_exception&) {
-    return std::nullopt;
-  }
-  // The sampled axes are exactly unit vectors (Pythagorean directions).
-  const MechanismFrameOf<T> frame(topology, solution->motion, values.joint_at, values.point_at, values.axis, true);
-  std::optional<MechanismSolution<Rational>> exact;
-  std::optional<MechanismScene> s;
-  std::vector<Verdict> out(claims.size(), Verdict::Holds);
-  for (size_t k = 0; k < claims.size(); ++k) {
-    if (done[k]) continue;
-    const auto t0 = Clock::now();
-    SampleResult& r = results[k];
-    if constexpr (ScalarTraits<T>::is_exact) {
-      out[k] = quick_verdict(claims[k], frame, &r.undefined_quantity, &r.undefined_reason);
-    } else {
-      out[k] = floating_verdict(claims[k], frame, r);
-      if (out[k] == Verdict::Fails) {
-        if (!s) s = build_scene(topology, layout, config, name);
-        if (!exact) exact = solve(*s);
-        LINKPROOF_ASSERT(exact.has_value(), "a floating failure on a configuration that is singular exactly");
-        const MechanismFrame exact_frame(*s, exact->motion);
-        LINKPROOF_ASSERT(quick_verdict(claims[k], exact_frame, nullptr, nullptr) == Verdict::Fails,
-                         "a floating failure the exact sides do not confirm");
-      }
-    }
-    seconds[k] += std::chrono::duration<double>(Clock::now() - t0).count();
-  }
-  return out;
-}
-
-bool still_fails(const MechanismDataClaim& claim, const MechanismScene& s) {
-  const auto solution = solve(s);
-  if (!solution) return false;
-  const MechanismFrame frame(s, solution->motion);
-  return quick_verdict(claim, frame, nullptr, nullptr) == Verdict::Fails && is_readable(s);
-}
-
-// Size of a rational for shrinking: |numerator| + denominator.
-Rational size_of(const Rational& q) {
-  const cln::cl_I n = cln::abs(cln::numerator(q)), d = cln::denominator(q);
-  return Rational(n) + Rational(d);
-}
-
-std::vector<Rational> smaller_integers(const Rational& x) {
-  std::vector<Rational> out{0};
-  const cln::cl_I t = cln::truncate1(x);
-  if (t != 0) out.push_back(cln::truncate1(t, 2));
-  if (t > 0) out.push_back(t - cln::cl_I(1));
-  if (t < 0) out.push_back(t + cln::cl_I(1));
-  if (Rational(t) != x) out.push_back(t);
-  return out;
-}
-
-std::vector<Rational> smaller_rates(const Rational& x, bool nonzero) {
-  std::vector<Rational> out;
-  if (!nonzero) out.push_back(0);
-  out.push_back(1);
-  out.push_back(-1);
-  for (const Rational& r : smaller_integers(x))
-    if (!nonzero || r != 0) out.push_back(r);
-  return out;
-}
-
-// Shrinks a failing configuration one value at a time (see the header comment).
-MechanismCounterexample shrink(const MechanismDataClaim& claim, const MechanismScene& topology, const Layout& layout,
-                               Config c, int index, const TopologySampling& o) {
-  MechanismCounterexample cx;
-  cx.configuration = index;
-  const std::string name = fmt::format("counterexample-{}", claim.info.id);
-  const auto accept = [&](Config candidate) {
-    if (cx.shrink_tried >= o.shrink_budget) return false;
-    ++cx.shrink_tried;
-    if (!still_fails(claim, build_scene(topology, layout, candidate, name))) return false;
-    c = std::move(candidate);
-    ++cx.shrink_steps;
-    return true;
-  };
-  for (bool changed = true; changed && cx.shrink_tried < o.shrink_budget;) {
-    changed = false;
-    for (size_t g = 0; g < c.positions.size(); ++g)
-      for (int axis = 0; axis < 2; ++axis) {
-        const Rational current = axis ? c.positions[g].y : c.positions[g].x;
-        for (const Rational& v : smaller_integers(current)) {
-          if (!(size_of(v) < size_of(current))) continue;
-          Config t = c;
-          (axis ? t.positions[g].y : t.positions[g].x) = v;
-          if (accept(std::move(t))) { changed = true; break; }
-        }
-      }
-    for (size_t j = 0; j < c.axes.size(); ++j) {
-      if (topology.linkage.joint(static_cast<int>(j)).type != JointType::Prismatic) continue;
-      for (const Vec2<Rational>& u : {Vec2<Rational>{1, 0}, Vec2<Rational>{0, 1}}) {
-        if (c.axes[j].x == u.x && c.axes[j].y == u.y) break;
-        Config t = c;
-        t.axes[j] = u;
-        if (accept(std::move(t))) { changed = true; break; }
-      }
-    }
-    for (size_t k = 0; k < c.rate.size(); ++k)
-      for (int dot = 0; dot < 2; ++dot) {
-        const Rational current = dot ? c.rate_dot[k] : c.rate[k];
-        for (const Rational& v : smaller_rates(current, !dot)) {
-          if (!(size_of(v) < size_of(current)) && !(size_of(v) == size_of(current) && v > current)) continue;
-          Config t = c;
-          (dot ? t.rate_dot[k] : t.rate[k]) = v;
-          if (accept(std::move(t))) { changed = true; break; }
-        }
-      }
-  }
-  cx.scene = build_scene(topology, layout, c, name);
-  cx.scene.source = "counterexample";
-  cx.scene_yaml = mechanism_scene_to_yaml(cx.scene);
-  const auto solution = solve(cx.scene);
-  LINKPROOF_ASSERT(solution.has_value(), "a shrunk counterexample that does not solve");
-  const MechanismContext ctx{cx.scene, *solution};
-  cx.outcome = run_mechanism_claim(to_mechanism_claim(claim), ctx);
-  return cx;
-}
-
-}  // namespace
 
 std::string to_string(TopologyVerdict v) {
   switch (v) {
@@ -282,9 +26,20 @@ bool SampleResult::is_as_expected() const {
 
 MechanismScene random_topology_configuration(const MechanismScene& scene, std::uint64_t seed, int index,
                                              int coordinate_range) {
-  const Layout layout = topology_layout(scene);
-  return build_scene(scene, layout, random_config(scene, layout, seed, index, coordinate_range),
-                     fmt::format("{}-sample-{}", scene.name, index));
+  const TopologyLayout layout = topology_layout(scene);
+  TopologySampling o;
+  o.seed = seed;
+  o.coordinate_range = coordinate_range;
+  const std::vector<MechanismDataClaim> no_claims;
+  const TopologyConfigurations configurations(scene, no_claims, o);
+  return topology_configuration(scene, layout, configurations.values(index), configurations.name(index));
+}
+
+TopologyVerdict topology_verdict(const SampleResult& r, bool failed) {
+  if (failed) return TopologyVerdict::Disproved;
+  return r.compared > 0                          ? TopologyVerdict::HoldsOnSamples
+         : r.undefined == 0 && r.inconclusive > 0 ? TopologyVerdict::Inconclusive
+                                                  : TopologyVerdict::Undefined;
 }
 
 TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
@@ -294,7 +49,7 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
   TopologySampleRun run;
   run.topology = scene.name;
   run.options = o;
-  const Layout layout = topology_layout(scene);
+  const TopologyConfigurations configurations(scene, claims, o);
   for (const MechanismDataClaim& c : claims) {
     SampleResult r;
     r.info = c.info;
@@ -303,17 +58,13 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
   std::vector<double> claim_seconds(claims.size(), 0.0);
   const int attempts = 20 * o.count + 100;
   std::vector<bool> done(claims.size(), false);
-  std::map<size_t, std::pair<int, Config>> failures;  // claim -> (configuration, values)
+  std::map<size_t, int> failures;  // claim -> the configuration it first failed on
   for (int i = 0; i < attempts; ++i) {
     bool any_open = false;
     for (size_t k = 0; k < claims.size(); ++k) any_open = any_open || !done[k];
     if (!any_open) break;
-    const Config config = random_config(scene, layout, o.seed, i, o.coordinate_range);
-    const std::string name = fmt::format("{}-sample-{}", scene.name, i);
     ++run.generated;
-    const std::optional<std::vector<Verdict>> verdicts = with_scalar_type(o.arithmetic, [&]<class T>() {
-      return configuration_verdicts<T>(scene, layout, config, name, claims, done, run.claims, claim_seconds);
-    });
+    const std::optional<std::vector<Verdict>> verdicts = configurations.judge(i, done, run.claims, claim_seconds);
     if (!verdicts) {
       ++run.singular;
       continue;
@@ -327,12 +78,12 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
         case Verdict::Undefined: ++r.undefined; break;
         case Verdict::Inconclusive: ++r.inconclusive; break;
         default:
-          if (!is_readable(build_scene(scene, layout, config, name))) {  // degenerate: no replayable counterexample
+          if (!configurations.is_replayable(i)) {  // degenerate: no replayable counterexample
             ++run.degenerate;
             break;
           }
           done[k] = true;
-          failures[k] = {i, config};
+          failures[k] = i;
           break;
       }
     }
@@ -340,14 +91,9 @@ TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector
   for (size_t k = 0; k < claims.size(); ++k) {
     SampleResult& r = run.claims[k];
     const auto t0 = Clock::now();
-    if (const auto f = failures.find(k); f != failures.end()) {
-      r.verdict = TopologyVerdict::Disproved;
-      r.counterexample = shrink(claims[k], scene, layout, f->second.second, f->second.first, o);
-    } else {
-      r.verdict = r.compared > 0                          ? TopologyVerdict::HoldsOnSamples
-                  : r.undefined == 0 && r.inconclusive > 0 ? TopologyVerdict::Inconclusive
-                                                           : TopologyVerdict::Undefined;
-    }
+    const auto f = failures.find(k);
+    r.verdict = topology_verdict(r, f != failures.end());
+    if (f != failures.end()) r.counterexample = configurations.shrink(k, f->second);
     r.seconds = claim_seconds[k] + std::chrono::duration<double>(Clock::now() - t0).count();
   }
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();

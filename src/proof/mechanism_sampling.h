@@ -103,6 +103,11 @@ struct TopologySampleRun {
 MechanismScene random_topology_configuration(const MechanismScene& scene, std::uint64_t seed, int index,
                                              int coordinate_range = 10);
 
+/// The verdict of a claim from its counts: disproved if it `failed` on a replayable
+/// configuration, else holds_on_samples if it was compared on at least one, else inconclusive if
+/// it was never undefined but undecided somewhere, else undefined.
+TopologyVerdict topology_verdict(const SampleResult& counts, bool failed);
+
 /// Samples the topology of `scene` and judges every claim (bound to `scene`'s names).
 TopologySampleRun sample_topology(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
                                   const TopologySampling& options);

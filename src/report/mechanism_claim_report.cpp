@@ -24,12 +24,6 @@ std::string rests_on(const TopologySampleRun& run) {
                      run.topology, run.options.seed);
 }
 
-std::string inconclusive_note(const SampleResult& r) {
-  if (r.inconclusive == 0) return "";
-  return fmt::format("; {} inconclusive, the first at {}: {}", r.inconclusive, r.first_inconclusive->label,
-                     reason_text(*r.first_inconclusive));
-}
-
 std::string scope(const SampleResult& r, const TopologySampleRun& run) {
   switch (r.verdict) {
     case TopologyVerdict::HoldsOnSamples:
@@ -56,6 +50,12 @@ std::string scope(const SampleResult& r, const TopologySampleRun& run) {
 }
 
 }  // namespace
+
+std::string inconclusive_note(const SampleResult& r) {
+  if (r.inconclusive == 0) return "";
+  return fmt::format("; {} inconclusive, the first at {}: {}", r.inconclusive, r.first_inconclusive->label,
+                     reason_text(*r.first_inconclusive));
+}
 
 nlohmann::json to_json(const MechanismCounterexample& x) {
   return {{"configuration", x.configuration},

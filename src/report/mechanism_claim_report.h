@@ -26,6 +26,9 @@ nlohmann::json to_json(const MechanismCounterexample& c);
 /// Its differing values (with decimals) and its scene, indented, for the text reports.
 void write_text(std::ostream& out, const MechanismCounterexample& c);
 
+/// "; N inconclusive, the first at LABEL: REASON" when a claim was undecided somewhere, else "".
+std::string inconclusive_note(const SampleResult& r);
+
 /// `status`: the program's decisions (report/claims_status.h), one per claim of `run`.
 nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status);
 void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsStatus& status);

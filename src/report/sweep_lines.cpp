@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "linkproof/core/error.h"
+#include "report/json_line_fields.h"
 #include "report/json_report.h"
 
 namespace linkproof {
@@ -15,27 +16,8 @@ using nlohmann::json;
 
 namespace {
 
-constexpr Verdict kVerdicts[] = {Verdict::Holds, Verdict::Fails, Verdict::Undefined, Verdict::Inconclusive,
-                                 Verdict::Error};
-
-Verdict verdict_or_throw(const json& j, const std::string& file, const std::string& field) {
-  if (j.is_string())
-    for (Verdict v : kVerdicts)
-      if (j.get<std::string>() == to_string(v)) return v;
-  throw InputError(file, field, "not a verdict (holds, fails, undefined, inconclusive, error): " + j.dump());
-}
-
-const json& member(const json& j, const char* key, json::value_t type, const std::string& file,
-                   const std::string& where) {
-  const auto it = j.find(key);
-  if (it == j.end()) throw InputError(file, where + "." + key, "missing");
-  const bool ok = type == json::value_t::number_integer ? it->is_number_integer() : it->type() == type;
-  if (!ok) throw InputError(file, where + "." + key, "has the wrong type: " + it->dump());
-  return *it;
-}
-
 std::string text(const json& j, const char* key, const std::string& file, const std::string& where) {
-  return member(j, key, json::value_t::string, file, where).get<std::string>();
+  return line_member(j, key, json::value_t::string, file, where).get<std::string>();
 }
 
 std::string optional_text(const json& j, const char* key, const std::string& file, const std::string& where) {
@@ -77,7 +59,7 @@ std::string sweep_summary_line(const SweepReport& report, const Shard& shard, in
 void check_evidence_json(const json& j, const std::string& file, const std::string& field) {
   if (!j.is_object()) throw InputError(file, field, "must be an object");
   text(j, "label", file, field);
-  const Verdict v = verdict_or_throw(member(j, "verdict", json::value_t::string, file, field), file, field + ".verdict");
+  const Verdict v = line_verdict(line_member(j, "verdict", json::value_t::string, file, field), file, field + ".verdict");
   for (const char* key : {"undefined_quantity", "reason", "tolerance_derivation", "trust_route", "inconclusive_side",
                           "inconclusive_quantity"})
     optional_text(j, key, file, field);
@@ -100,31 +82,11 @@ SweepLine parse_sweep_line(const std::string& line, const std::string& file, lon
   if (!j.is_object()) throw InputError(file, where, "must be a JSON object");
   SweepLine out;
   if (j.contains("summary")) {
-    out.summary = member(j, "summary", json::value_t::object, file, where);
+    out.summary = line_member(j, "summary", json::value_t::object, file, where);
     return out;
   }
   // The digest first: an edited line is reported as edited, whatever else it breaks.
-  const auto digest = j.find("digest");
-  if (digest == j.end() || !digest->is_string())
-    throw InputError(file, where + ".digest",
-                     "missing: every case line carries the digest of its content (a line of an older linkproof, or "
-                     "edited)");
-  {
-    json content = j;
-    content.erase("digest");
-    std::string canonical, written;
-    try {
-      canonical = content.dump();
-      written = j.dump();
-    } catch (const json::type_error& e) {
-      throw InputError(file, where, std::string("not valid UTF-8: ") + e.what());
-    }
-    if (sweep_line_digest(canonical) != digest->get<std::string>())
-      throw InputError(file, where + ".digest",
-                       "does not match the line's content: the line was edited or damaged after it was written");
-    if (written != line)
-      throw InputError(file, where, "is not in the form linkproof writes (keys sorted, no spaces): edited by hand");
-  }
+  check_line_digest(j, line, file, where);
   static const char* const kCaseKeys[] = {"arithmetic", "case",    "digest", "examples",       "family",
                                           "index",      "n",       "seed",   "not_applicable", "verdicts"};
   for (const auto& [key, value] : j.items())
@@ -132,9 +94,9 @@ SweepLine parse_sweep_line(const std::string& line, const std::string& file, lon
       throw InputError(file, where + "." + key, "is not a field of a case line");
   const json& seed = j.find("seed") != j.end() && j["seed"].is_number_unsigned() ? j["seed"] : json();
   if (seed.is_null()) throw InputError(file, where + ".seed", "missing or not an unsigned integer");
-  const long k = member(j, "case", json::value_t::number_integer, file, where).get<long>();
-  const int n = member(j, "n", json::value_t::number_integer, file, where).get<int>();
-  const int index = member(j, "index", json::value_t::number_integer, file, where).get<int>();
+  const long k = line_member(j, "case", json::value_t::number_integer, file, where).get<long>();
+  const int n = line_member(j, "n", json::value_t::number_integer, file, where).get<int>();
+  const int index = line_member(j, "index", json::value_t::number_integer, file, where).get<int>();
   if (k < 0 || n < 4 || n > 200 || index < 0) throw InputError(file, where, "case, n or index out of range");
   const auto arithmetic = parse_arithmetic(text(j, "arithmetic", file, where));
   if (!arithmetic) throw InputError(file, where + ".arithmetic", "unknown arithmetic " + j["arithmetic"].dump());
@@ -144,22 +106,22 @@ SweepLine parse_sweep_line(const std::string& line, const std::string& file, lon
   c.polygon = generate_random_polygon(seed.get<std::uint64_t>(), n, index);
   if (text(j, "family", file, where) != c.polygon.family)
     throw InputError(file, where + ".family", "does not match the polygon generated from seed, n and index");
-  for (const auto& [id, v] : member(j, "verdicts", json::value_t::object, file, where).items())
-    c.verdicts[id] = verdict_or_throw(v, file, where + ".verdicts." + id);
-  for (const auto& id : member(j, "not_applicable", json::value_t::array, file, where)) {
+  for (const auto& [id, v] : line_member(j, "verdicts", json::value_t::object, file, where).items())
+    c.verdicts[id] = line_verdict(v, file, where + ".verdicts." + id);
+  for (const auto& id : line_member(j, "not_applicable", json::value_t::array, file, where)) {
     if (!id.is_string()) throw InputError(file, where + ".not_applicable", "must hold claim ids");
     c.not_applicable.push_back(id.get<std::string>());
   }
-  const json& examples = member(j, "examples", json::value_t::array, file, where);
+  const json& examples = line_member(j, "examples", json::value_t::array, file, where);
   for (size_t i = 0; i < examples.size(); ++i) {
     const std::string at = fmt::format("{}.examples[{}]", where, i);
     const json& x = examples[i];
     if (!x.is_object()) throw InputError(file, at, "must be an object");
     SweepExample e;
     e.claim_id = text(x, "claim", file, at);
-    e.verdict = verdict_or_throw(member(x, "verdict", json::value_t::string, file, at), file, at + ".verdict");
+    e.verdict = line_verdict(line_member(x, "verdict", json::value_t::string, file, at), file, at + ".verdict");
     e.polygon = c.polygon;
-    const json& evidence = member(x, "evidence", json::value_t::object, file, at);
+    const json& evidence = line_member(x, "evidence", json::value_t::object, file, at);
     check_evidence_json(evidence, file, at + ".evidence");
     e.recorded_evidence = evidence.dump();
     e.error = optional_text(x, "error", file, at);
