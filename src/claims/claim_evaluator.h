@@ -150,27 +150,42 @@ class ClaimEvaluator {
       case Op::Power: return power(scalar_of(n.children[0], b), n.exponent);
       case Op::Global: return global(n);
       case Op::InputScalar: return input_scalar(n, index(n, b, true));
-      case Op::SideScalar: return side_rate(index(n, b, false), n.quantity == Quantity::SideOmegaDot);
-      case Op::Norm2: {
-        const Vector a = vector_of(n.children[0], b);
-        return plus(times(a.x, a.x), times(a.y, a.y));
-      }
-      case Op::Vx: return vector_of(n.children[0], b).x;
-      case Op::Vy: return vector_of(n.children[0], b).y;
-      case Op::Dot: {
-        const Vector a = vector_of(n.children[0], b), c = vector_of(n.children[1], b);
-        return plus(times(a.x, c.x), times(a.y, c.y));
-      }
-      case Op::Cross: {
-        const Vector a = vector_of(n.children[0], b), c = vector_of(n.children[1], b);
-        return minus(times(a.x, c.y), times(a.y, c.x));
-      }
-      case Op::SumJ:
-      case Op::SumPairs:
-      case Op::SumPairsLt: return Scalar::poly(sum(n, b));
+      case Op::SideScalar: return side_rate(index(n, b, false), side_acceleration(n));
+      case Op::Function: return scalar_function(n, b);
+      case Op::IndexSum: return Scalar::poly(sum(n, b));
       default: break;
     }
     throw InternalError("claim program: a vector node where a number was compiled");
+  }
+
+  /// The words of vectors whose value is a number.
+  Scalar scalar_function(const Node& n, const IndexBindings& b) {
+    switch (n.evaluation) {
+      case Evaluation::Norm2: {
+        const Vector a = vector_of(n.children[0], b);
+        return plus(times(a.x, a.x), times(a.y, a.y));
+      }
+      case Evaluation::Vx: return vector_of(n.children[0], b).x;
+      case Evaluation::Vy: return vector_of(n.children[0], b).y;
+      case Evaluation::Dot: {
+        const Vector a = vector_of(n.children[0], b), c = vector_of(n.children[1], b);
+        return plus(times(a.x, c.x), times(a.y, c.y));
+      }
+      case Evaluation::Cross: {
+        const Vector a = vector_of(n.children[0], b), c = vector_of(n.children[1], b);
+        return minus(times(a.x, c.y), times(a.y, c.x));
+      }
+      default: throw InternalError("claim program: the word '" + n.word->name + "' has no evaluation as a number");
+    }
+  }
+
+  /// side_omega[k] (false) or side_omega_dot[k] (true).
+  static bool side_acceleration(const Node& n) {
+    switch (n.evaluation) {
+      case Evaluation::SideOmega: return false;
+      case Evaluation::SideOmegaDot: return true;
+      default: throw InternalError("claim program: the word '" + n.word->name + "' is no rate of a side");
+    }
   }
 
   Vector vector_of(int id, const IndexBindings& b) {
@@ -205,25 +220,34 @@ class ClaimEvaluator {
         }
         return pv;
       }
-      case Op::InputVector: {
-        const int j = index(n, b, true);
-        if (n.quantity == Quantity::Kp) return vec(construction(j).k_prime);
-        if (n.quantity == Quantity::Q) return vec(construction(j).q.get());
-        return vec(construction(j).p_prime.get());
-      }
-      case Op::SideVector: {
-        const int k = index(n, b, false);
-        if (n.quantity == Quantity::R) return vec(c_.r(k));
-        if (n.quantity == Quantity::K) return vec(c_.polygon.joint(k));
-        return acceleration_of_joint(k);
-      }
-      case Op::Perp: {
+      case Op::InputVector: return input_vector(n, index(n, b, true));
+      case Op::SideVector: return side_vector(n, index(n, b, false));
+      case Op::Function: {
+        if (n.evaluation != Evaluation::Perp) break;
         const Vector a = vector_of(n.children[0], b);
         return {negated(a.y), a.x};
       }
       default: break;
     }
     throw InternalError("claim program: a number node where a vector was compiled");
+  }
+
+  Vector input_vector(const Node& n, int j) {
+    switch (n.evaluation) {
+      case Evaluation::Kp: return vec(construction(j).k_prime);
+      case Evaluation::Q: return vec(construction(j).q.get());
+      case Evaluation::Pp: return vec(construction(j).p_prime.get());
+      default: throw error("'" + n.word->name + "' is not an input vector");
+    }
+  }
+
+  Vector side_vector(const Node& n, int k) {
+    switch (n.evaluation) {
+      case Evaluation::R: return vec(c_.r(k));
+      case Evaluation::K: return vec(c_.polygon.joint(k));
+      case Evaluation::JointAcc: return acceleration_of_joint(k);
+      default: throw error("'" + n.word->name + "' is not a side vector");
+    }
   }
 
   /// f^k, k != 1, as repeated products from 1; k < 0 divides 1 by f^|k| (tested for zero) and
@@ -319,12 +343,12 @@ class ClaimEvaluator {
   }
 
   Scalar global(const Node& n) {
-    using Q = Quantity;
-    switch (n.quantity) {
+    using Q = Evaluation;
+    switch (n.evaluation) {
       case Q::OmegaOut:
       case Q::OmegaCpl: {
         const auto& vc = c_.velocity_coefficients().get();
-        const auto& coef = n.quantity == Q::OmegaOut ? vc.first : vc.second;
+        const auto& coef = n.evaluation == Q::OmegaOut ? vc.first : vc.second;
         RatePoly<T> p;
         for (int j = 1; j <= c_.inputs(); ++j)
           p += RatePoly<T>(coef[static_cast<size_t>(j - 1)]) * RatePoly<T>::variable({j, RateVariable::Omega});
@@ -337,11 +361,11 @@ class ClaimEvaluator {
       case Q::Rho:
       case Q::RhoCompanion: {
         const ClosedForms<T>& cf = c_.closed().get();
-        if (reading_.signed_phi) return constant(n.quantity == Q::CotPhi ? cf.cot_phi : n.quantity == Q::Rho ? cf.rho : cf.rho_companion);
+        if (reading_.signed_phi) return constant(n.evaluation == Q::CotPhi ? cf.cot_phi : n.evaluation == Q::Rho ? cf.rho : cf.rho_companion);
         // The unsigned drawn angle |phi| (erratum §A5.6): cot|phi| = r_{n-2}.r_{n-1}/|D|, sin|phi| = |sin phi|.
         const T abs_d = abs_value(cf.D);
         const Vec2<T> a = c_.r(c_.n - 2), bb = c_.r(c_.n - 1);
-        return constant((n.quantity == Q::CotPhi ? dot(a, bb) : norm2(n.quantity == Q::Rho ? a : bb)) / abs_d);
+        return constant((n.evaluation == Q::CotPhi ? dot(a, bb) : norm2(n.evaluation == Q::Rho ? a : bb)) / abs_d);
       }
       default: throw error("'" + n.word->name + "' is not a number");
     }
@@ -371,11 +395,11 @@ class ClaimEvaluator {
   }
 
   Scalar input_scalar(const Node& n, int j) {
-    using Q = Quantity;
+    using Q = Evaluation;
     const auto k = static_cast<size_t>(j - 1);
-    switch (n.quantity) {
-      case Q::Omega: return rate(j, RateVariable::Omega);
-      case Q::OmegaDot: return rate(j, RateVariable::OmegaDot);
+    switch (n.evaluation) {
+      case Q::InputOmega: return rate(j, RateVariable::Omega);
+      case Q::InputOmegaDot: return rate(j, RateVariable::OmegaDot);
       case Q::IOut: return constant(construction(j).i_out.get());
       case Q::ICpl: return constant(construction(j).i_cpl.get());
       case Q::CotBeta: return constant(construction(j).cot_beta.get());
@@ -432,7 +456,7 @@ class ClaimEvaluator {
     const int body = node.children[0];
     const int m = c_.inputs();
     RatePoly<T> total;
-    if (node.op == Op::SumJ) {
+    if (node.evaluation == Evaluation::SumJ) {
       for (int j = 1; j <= m; ++j) {
         IndexBindings inner = b;
         inner.j = j;
@@ -446,7 +470,9 @@ class ClaimEvaluator {
       return total;
     }
     // Ordered pairs: omega_a omega_b receives (a, b) and later (b, a), out of order (pair_sum.h).
-    const bool ordered = node.op == Op::SumPairs;
+    if (node.evaluation != Evaluation::SumPairs && node.evaluation != Evaluation::SumPairsLt)
+      throw InternalError("claim program: the sum '" + node.word->name + "' has no evaluation");
+    const bool ordered = node.evaluation == Evaluation::SumPairs;
     PairSum<T> pairs(ordered ? m : 0);
     for (int j = 1; j <= m; ++j)
       for (int l = ordered ? 1 : j + 1; l <= m; ++l) {

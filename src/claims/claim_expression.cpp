@@ -21,8 +21,8 @@ namespace {
 // A word's call printed as the claim file writes it (r[1], dot(a, b)), so that messages about a
 // claim quote the claim and not its internal form (lp_word1(32,1)).
 void print_word(const GiNaC::ex& code, std::initializer_list<const GiNaC::ex*> args, const GiNaC::print_context& c) {
-  const Word& w = vocabulary().at(static_cast<size_t>(GiNaC::ex_to<GiNaC::numeric>(code).to_int()));
-  const bool indexed = w.kind != WordKind::VectorFunction && w.kind != WordKind::Sum;
+  const Word& w = word_of_code(GiNaC::ex_to<GiNaC::numeric>(code).to_int());
+  const bool indexed = w.is_indexed();
   c.s << w.name << (indexed ? "[" : "(");
   const char* separator = "";
   for (const GiNaC::ex* a : args) {
@@ -73,25 +73,24 @@ GiNaC::ex read_call2(const GiNaC::exvector& a) { return GiNaC::lp_word2(Code, a[
 
 constexpr int kMaxWords = 64;
 
+// The readers of the calls of every polygon word, by code (a GiNaC reader is a plain function,
+// so the code is a template argument).
 template <int... Codes>
 void register_readers(AtomTable& t, std::integer_sequence<int, Codes...>) {
-  const auto& words = vocabulary();
-  const auto one = [&](int code, GiNaC::reader_func r1, GiNaC::reader_func r2) {
-    if (code >= static_cast<int>(words.size())) return;
-    const Word& w = words[static_cast<size_t>(code)];
-    if (w.arity == 1) t.prototypes[{w.name, 1}] = r1;
-    if (w.arity == 2) t.prototypes[{w.name, 2}] = r2;
-  };
-  (one(Codes, &read_call1<Codes>, &read_call2<Codes>), ...);
+  static const GiNaC::reader_func one[] = {&read_call1<Codes>...}, two[] = {&read_call2<Codes>...};
+  for (const Word& w : vocabulary()) {
+    if (!w.belongs_to(Language::Polygon) || w.arity() == 0) continue;
+    const int code = word_code(w);
+    LINKPROOF_ASSERT(code < kMaxWords && w.arity() <= 2, "raise kMaxWords, or add a reader of 3 arguments");
+    t.prototypes[{w.name, static_cast<std::size_t>(w.arity())}] = w.arity() == 1 ? one[code] : two[code];
+  }
 }
 
 const AtomTable& atoms() {
   static const AtomTable table = [] {
     AtomTable t;
-    const auto& words = vocabulary();
-    LINKPROOF_ASSERT(words.size() <= static_cast<size_t>(kMaxWords), "raise kMaxWords");
-    for (const Word& w : words)
-      if (w.arity == 0) {
+    for (const Word& w : vocabulary())
+      if (w.belongs_to(Language::Polygon) && w.arity() == 0) {
         GiNaC::symbol s(w.name);
         t.symbols.emplace(word_code(w), s);
         t.symtab[w.name] = s;
@@ -102,7 +101,24 @@ const AtomTable& atoms() {
   return table;
 }
 
+const Word* polygon_word_called(const std::string& name, int arity) { return find_word(Language::Polygon, name, arity); }
+
 // --- The scanner ------------------------------------------------------------------------------
+
+// Which inputs a sum binds, and the names of the index symbols it binds.
+IndexBinding sum_binding(const Word& sum) {
+  switch (sum.evaluation) {
+    case Evaluation::SumJ: return IndexBinding::SumJ;
+    case Evaluation::SumPairs: return IndexBinding::SumPairs;
+    case Evaluation::SumPairsLt: return IndexBinding::SumPairsLt;
+    default: throw InternalError("the sum '" + sum.name + "' binds no known indices");
+  }
+}
+std::vector<std::string> bound_by(IndexBinding b) {
+  const std::string& j = polygon_word(Evaluation::IndexJ).name;
+  if (b == IndexBinding::SumJ) return {j};
+  return {j, polygon_word(Evaluation::IndexL).name};
+}
 
 using Tok = TokenKind;
 using Token = ExpressionToken;
@@ -117,7 +133,7 @@ class Scanner {
     size_t i = 0;
     std::set<std::string> bound;
     if (context_.j_is_free) {
-      bound.insert("j");
+      bound.insert(polygon_word(Evaluation::IndexJ).name);
       binding_ = IndexBinding::ForEachJ;
     }
     expression(i, bound, /*in_index=*/false, /*depth=*/0);
@@ -272,16 +288,17 @@ class Scanner {
     const Token& t = tokens_[i++];
     const bool call = tokens_[i].kind == Tok::Open;
     if (!call) {
-      const Word* w = find_word(t.text, 0);
+      const Word* w = polygon_word_called(t.text, 0);
       if (!w) {
-        if (find_word(t.text, 1) || find_word(t.text, 2))
-          fail(t.offset, "'" + t.text + "' needs " + (find_word(t.text, 1) ? "an index or argument, as in " + t.text + "[j]"
-                                                                             : std::string("two arguments")));
+        if (polygon_word_called(t.text, 1) || polygon_word_called(t.text, 2))
+          fail(t.offset, "'" + t.text + "' needs " + (polygon_word_called(t.text, 1) ? "an index or argument, as in " + t.text + "[j]"
+                                                                                     : std::string("two arguments")));
         fail(t.offset, "unknown name '" + t.text + "' (see `linkproof check-claim --vocabulary`)");
       }
-      if (w->kind == WordKind::Index) {
-        if (!in_index && t.text == "n") fail(t.offset, "'n' may only be used inside an index, as in r[n-1]");
-        if (t.text != "n" && !bound.count(t.text))
+      if (w->result == ClaimKind::Index) {
+        const bool is_n = w->evaluation == Evaluation::IndexN;  // n is never bound: it is the polygon's
+        if (!in_index && is_n) fail(t.offset, "'n' may only be used inside an index, as in r[n-1]");
+        if (!is_n && !bound.count(t.text))
           fail(t.offset, "'" + t.text + "' is not bound here: use it inside sum_j(...)/sum_pairs(...) or with for_each: j");
         if (!in_index) fail(t.offset, "'" + t.text + "' is an index: use it inside [ ], as in omega[" + t.text + "]");
       } else if (in_index) {
@@ -308,17 +325,17 @@ class Scanner {
         if (tokens_[k].kind == Tok::Comma && level == 0) ++args;
       }
       if (k == i) fail(open.offset, "empty " + std::string(is_index ? "index" : "argument list"));
-      w = find_word(t.text, args);
+      w = polygon_word_called(t.text, args);
       if (!w) {
-        const Word* any = find_word(t.text, 1) ? find_word(t.text, 1) : find_word(t.text, 2) ? find_word(t.text, 2)
-                                                                                             : find_word(t.text, 0);
+        const Word* any = polygon_word_called(t.text, 1)   ? polygon_word_called(t.text, 1)
+                          : polygon_word_called(t.text, 2) ? polygon_word_called(t.text, 2)
+                                                           : polygon_word_called(t.text, 0);
         if (!any) fail(t.offset, "unknown name '" + t.text + "' (see `linkproof check-claim --vocabulary`)");
-        fail(t.offset, "'" + t.text + "' takes " + std::to_string(any->arity) + " argument(s), not " + std::to_string(args));
+        fail(t.offset, "'" + t.text + "' takes " + std::to_string(any->arity()) + " argument(s), not " + std::to_string(args));
       }
     }
     if (in_index) fail(t.offset, "'" + t.text + "' inside an index: an index is built from n, j, l and integers");
-    const bool indexed = w->kind == WordKind::InputScalar || w->kind == WordKind::SideScalar ||
-                         w->kind == WordKind::SideVector || w->kind == WordKind::InputVector;
+    const bool indexed = w->is_indexed();
     if (indexed && !is_index) fail(open.offset, "'" + t.text + "' is indexed with [ ], as in " + t.text + "[j]");
     if (!indexed && is_index) fail(open.offset, "'" + t.text + "' is called with ( ), not indexed with [ ]");
     if (indexed) {
@@ -331,18 +348,14 @@ class Scanner {
           --level;
         }
       }
-      const bool input = w->kind == WordKind::InputScalar || w->kind == WordKind::InputVector;
+      const bool input = w->arguments[0] == ClaimKind::InputIndex;
       uses_.push_back({w->name, input, text_.substr(first, tokens_[close].offset - first), binding_, where(t.offset)});
     }
     const IndexBinding outer = binding_;
-    if (w->kind == WordKind::Sum)
-      binding_ = w->name == "sum_j" ? IndexBinding::SumJ
-                 : w->name == "sum_pairs" ? IndexBinding::SumPairs : IndexBinding::SumPairsLt;
     std::set<std::string> inner = bound;
-    if (w->kind == WordKind::Sum) {
-      const std::vector<std::string> binds = w->name == "sum_j" ? std::vector<std::string>{"j"}
-                                                                : std::vector<std::string>{"j", "l"};
-      for (const auto& b : binds) {
+    if (w->is_sum()) {
+      binding_ = sum_binding(*w);
+      for (const std::string& b : bound_by(binding_)) {
         if (bound.count(b)) fail(t.offset, "'" + t.text + "' binds " + b + ", which is already bound here");
         inner.insert(b);
       }
@@ -431,6 +444,8 @@ ClaimExpression ClaimExpression::parse(const std::string& text, const Expression
 namespace claim_atoms {
 
 const GiNaC::symbol& symbol_of(int word_code) { return atoms().symbols.at(word_code); }
+
+const GiNaC::symbol& index_symbol(Evaluation e) { return symbol_of(word_code(polygon_word(e))); }
 
 int code_of_symbol(const GiNaC::ex& e) {
   if (!GiNaC::is_exactly_a<GiNaC::symbol>(e)) return -1;

@@ -1,4 +1,4 @@
-// A claim expression: text in the vocabulary of vocabulary.h, checked and parsed into a GiNaC
+// A claim expression: text in the polygon language of vocabulary.h, checked and parsed into a GiNaC
 // expression (GiNaC's own parser does the parsing; `i_out[j]` is read as the function call
 // i_out(j)).
 //
@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "claims/vocabulary.h"
 #include "symbolic/canonical_form.h"
 
 namespace linkproof {
@@ -86,6 +87,8 @@ class ClaimExpression {
 namespace claim_atoms {
 /// The symbol of a 0-arity word (global quantity or index symbol n, j, l).
 const GiNaC::symbol& symbol_of(int word_code);
+/// The symbol of an index word: n, j or l (Evaluation::IndexN, IndexJ, IndexL).
+const GiNaC::symbol& index_symbol(Evaluation index);
 /// The word code of a symbol of the table, or -1.
 int code_of_symbol(const GiNaC::ex& e);
 /// If e is a call of a vocabulary word: its code and arguments; else code -1.

@@ -12,10 +12,6 @@ namespace linkproof {
 
 namespace {
 
-const GiNaC::symbol& index_symbol(const char* name) {
-  return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
-}
-
 /// The (j, l) values at which an affine index takes its extremes, at n sides (l = 0: unused).
 std::vector<std::pair<int, int>> vertices(IndexBinding b, int n) {
   const int m = n - 3;  // inputs
@@ -42,7 +38,9 @@ struct Bounds {
 }  // namespace
 
 void check_claim_indices(const ClaimExpression& e, int min_n, int max_n) {
-  const GiNaC::symbol &n_sym = index_symbol("n"), &j_sym = index_symbol("j"), &l_sym = index_symbol("l");
+  using claim_atoms::index_symbol;
+  const GiNaC::symbol &n_sym = index_symbol(Evaluation::IndexN), &j_sym = index_symbol(Evaluation::IndexJ),
+                      &l_sym = index_symbol(Evaluation::IndexL);
   for (const IndexUse& u : e.index_uses()) {
     const std::string written = u.word + "[" + u.index_text + "]";
     const auto refuse = [&](const std::string& problem) { throw InputError(u.where, e.field(), problem); };

@@ -1,5 +1,6 @@
 #include "claims/claim_program.h"
 
+#include <algorithm>
 #include <memory>
 #include <unordered_map>
 
@@ -15,27 +16,16 @@ using Op = ClaimProgram::Op;
 std::string text(const GiNaC::ex& e) { return ScalarTraits<GiNaC::ex>::to_string(e); }
 InputError error(const std::string& problem) { return InputError("<claim>", "expression", problem); }
 
-const GiNaC::symbol& index_symbol(const char* name) {
-  return claim_atoms::symbol_of(word_code(*find_word(name, 0)));
-}
+using claim_atoms::index_symbol;
 
-/// The quantity a word with a value reads; a word of the vocabulary without one is a bug.
-Quantity quantity_of(const Word& w) {
-  using Q = Quantity;
-  static const std::unordered_map<std::string, Quantity> table = {
-      {"omega_out", Q::OmegaOut}, {"omega_cpl", Q::OmegaCpl}, {"omega_dot_out", Q::OmegaDotOut},
-      {"omega_dot_cpl", Q::OmegaDotCpl}, {"D", Q::D}, {"cot_phi", Q::CotPhi}, {"rho", Q::Rho},
-      {"rho_companion", Q::RhoCompanion}, {"omega", Q::Omega}, {"omega_dot", Q::OmegaDot}, {"i_out", Q::IOut},
-      {"i_cpl", Q::ICpl}, {"cot_beta", Q::CotBeta}, {"cot_gamma", Q::CotGamma}, {"lambda", Q::Lambda}, {"mu", Q::Mu},
-      {"i_out_closed", Q::IOutClosed}, {"i_cpl_closed", Q::ICplClosed}, {"lambda_closed", Q::LambdaClosed},
-      {"mu_closed", Q::MuClosed}, {"fourbar_ratio_out", Q::FourbarRatioOut}, {"fourbar_ratio_cpl", Q::FourbarRatioCpl},
-      {"fourbar_omega_out", Q::FourbarOmegaOut}, {"fourbar_omega_cpl", Q::FourbarOmegaCpl},
-      {"fourbar_omega_dot_out", Q::FourbarOmegaDotOut}, {"fourbar_omega_dot_cpl", Q::FourbarOmegaDotCpl},
-      {"Kp", Q::Kp}, {"Q", Q::Q}, {"Pp", Q::Pp}, {"r", Q::R}, {"K", Q::K}, {"acc", Q::Acc},
-      {"side_omega", Q::SideOmega}, {"side_omega_dot", Q::SideOmegaDot}};
-  const auto it = table.find(w.name);
-  if (it == table.end()) throw InternalError("the vocabulary's word '" + w.name + "' has no quantity to read");
-  return it->second;
+/// A node reading or computing the word w.
+ClaimProgram::Node word_node(Op op, const Word& w) {
+  ClaimProgram::Node n;
+  n.op = op;
+  n.word = &w;
+  n.evaluation = w.evaluation;
+  n.is_vector = w.result == ClaimKind::Vector;
+  return n;
 }
 
 // Mirrors the evaluation the program replaces: value() of a GiNaC expression, form_value() of a
@@ -64,15 +54,11 @@ class Compiler {
       return scaled(form_value(s.primitive, e), s.content, e);
     }
     if (const int code = claim_atoms::code_of_symbol(e); code >= 0) {
-      const Word& w = vocabulary()[static_cast<size_t>(code)];
-      if (w.kind == WordKind::Index) throw error("'" + w.name + "' is an index, not a number");
-      ClaimProgram::Node n;
-      n.op = Op::Global;
-      n.word = &w;
-      n.quantity = quantity_of(w);
-      return add(std::move(n));
+      const Word& w = word_of_code(code);
+      if (w.result == ClaimKind::Index) throw error("'" + w.name + "' is an index, not a number");
+      return add(word_node(Op::Global, w));
     }
-    if (const int code = claim_atoms::code_of_call(e); code >= 0) return call(vocabulary()[static_cast<size_t>(code)], e);
+    if (const int code = claim_atoms::code_of_call(e); code >= 0) return call(word_of_code(code), e);
     throw error("cannot evaluate " + text(e));
   }
 
@@ -155,7 +141,8 @@ class Compiler {
 
   int index(const Word& w, const GiNaC::ex& arg) {
     using namespace GiNaC;
-    const symbol &n = index_symbol("n"), &j = index_symbol("j"), &l = index_symbol("l");
+    const symbol &n = index_symbol(Evaluation::IndexN), &j = index_symbol(Evaluation::IndexJ),
+                 &l = index_symbol(Evaluation::IndexL);
     ClaimProgram::Index f;
     f.uses_j = arg.has(j);
     f.uses_l = arg.has(l);
@@ -164,7 +151,7 @@ class Compiler {
     f.written = w.name + "[" + text(arg) + "]";
     if (f.uses_j || f.uses_l) {
       if (!f.bare_bound) f.bound_note = f.written + ": an index other than j, l, n, n-1, n-2";
-      else if (w.name == "K" || w.name == "acc") f.bound_note = f.written + ": depends on every side before it";
+      else if (w.evaluation == Evaluation::K || w.evaluation == Evaluation::JointAcc) f.bound_note = f.written + ": depends on every side before it";
     }
     if (arg.is_polynomial(lst{n, j, l}) && arg.degree(n) <= 1 && arg.degree(j) <= 1 && arg.degree(l) <= 1) {
       const ex c0 = arg.subs(lst{n == 0, j == 0, l == 0});
@@ -186,52 +173,37 @@ class Compiler {
     return static_cast<int>(p_.indexes.size()) - 1;
   }
 
+  // What the word's arguments are decides the node: a sum of its body, a quantity read at an
+  // index, or a function of vectors (the vocabulary's argument and result kinds).
   int call(const Word& w, const GiNaC::ex& e) {
     const GiNaC::ex& a0 = e.op(1);
-    ClaimProgram::Node n;
-    n.word = &w;
-    switch (w.kind) {
-      case WordKind::Sum: {
-        const int body = value(a0);
-        if (node(body).is_vector) throw error("a vector where a number is expected: " + text(a0));
-        n.op = w.name == "sum_j" ? Op::SumJ : w.name == "sum_pairs" ? Op::SumPairs : Op::SumPairsLt;
-        n.children = {body};
-        return add(std::move(n));
-      }
-      case WordKind::VectorFunction: return vector_function(w, e);
-      case WordKind::InputScalar: return indexed(std::move(n), Op::InputScalar, false, a0);
-      case WordKind::InputVector: return indexed(std::move(n), Op::InputVector, true, a0);
-      case WordKind::SideVector: return indexed(std::move(n), Op::SideVector, true, a0);
-      case WordKind::SideScalar: return indexed(std::move(n), Op::SideScalar, false, a0);
-      default: throw error("'" + w.name + "' cannot be called");
+    if (w.is_sum()) {
+      const int body = value(a0);
+      if (node(body).is_vector) throw error("a vector where a number is expected: " + text(a0));
+      ClaimProgram::Node n = word_node(Op::IndexSum, w);
+      n.children = {body};
+      return add(std::move(n));
     }
-  }
-
-  /// A quantity read at an index: word[arg].
-  int indexed(ClaimProgram::Node n, Op op, bool is_vector, const GiNaC::ex& arg) {
-    n.op = op;
-    n.is_vector = is_vector;
-    n.quantity = quantity_of(*n.word);
-    n.index = index(*n.word, arg);
-    return add(std::move(n));
+    if (w.is_indexed()) {
+      const bool input = w.arguments[0] == ClaimKind::InputIndex, vector = w.result == ClaimKind::Vector;
+      ClaimProgram::Node n = word_node(input ? (vector ? Op::InputVector : Op::InputScalar)
+                                             : (vector ? Op::SideVector : Op::SideScalar), w);
+      n.index = index(w, a0);
+      return add(std::move(n));
+    }
+    if (std::all_of(w.arguments.begin(), w.arguments.end(), [](ClaimKind k) { return k == ClaimKind::Vector; }))
+      return vector_function(w, e);
+    throw error("'" + w.name + "' cannot be called");
   }
 
   int vector_function(const Word& w, const GiNaC::ex& e) {
-    const std::string& s = w.name;
-    ClaimProgram::Node n;
-    n.word = &w;
-    const int a = value(e.op(1));
-    if (!node(a).is_vector) throw error(s + "(...) needs a vector argument: " + text(e));
-    n.children = {a};
-    if (s == "norm2" || s == "vx" || s == "vy" || s == "perp") {
-      n.op = s == "norm2" ? Op::Norm2 : s == "vx" ? Op::Vx : s == "vy" ? Op::Vy : Op::Perp;
-      n.is_vector = n.op == Op::Perp;
-      return add(std::move(n));
+    ClaimProgram::Node n = word_node(Op::Function, w);
+    for (int k = 0; k < w.arity(); ++k) {
+      const int a = value(e.op(static_cast<size_t>(k) + 1));
+      if (!node(a).is_vector)
+        throw error(w.name + (k == 0 ? "(...) needs a vector argument: " : "(...) needs vector arguments: ") + text(e));
+      n.children.push_back(a);
     }
-    const int c = value(e.op(2));
-    if (!node(c).is_vector) throw error(s + "(...) needs vector arguments: " + text(e));
-    n.children.push_back(c);
-    n.op = s == "dot" ? Op::Dot : Op::Cross;
     return add(std::move(n));
   }
 
@@ -242,7 +214,8 @@ class Compiler {
 
 int ClaimProgram::Index::substituted(int n, int j, int l) const {
   using namespace GiNaC;
-  const ex v = expression.subs(lst{index_symbol("n") == n, index_symbol("j") == j, index_symbol("l") == l});
+  const ex v = expression.subs(lst{index_symbol(Evaluation::IndexN) == n, index_symbol(Evaluation::IndexJ) == j,
+                                   index_symbol(Evaluation::IndexL) == l});
   if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
     throw error("the index of " + written + " is not an integer");
   return ex_to<numeric>(v).to_int();

@@ -30,19 +30,6 @@
 
 namespace linkproof {
 
-/// What a word reads, for the evaluator's switch: one per word with a value (the vocabulary's
-/// global quantities, input quantities and vectors, side vectors and rates; vocabulary.cpp says
-/// what each means).
-enum class Quantity : std::uint8_t {
-  None,  ///< sums, vector functions, constants
-  OmegaOut, OmegaCpl, OmegaDotOut, OmegaDotCpl, D, CotPhi, Rho, RhoCompanion,
-  Omega, OmegaDot, IOut, ICpl, CotBeta, CotGamma, Lambda, Mu, IOutClosed, ICplClosed, LambdaClosed, MuClosed,
-  FourbarRatioOut, FourbarRatioCpl, FourbarOmegaOut, FourbarOmegaCpl, FourbarOmegaDotOut, FourbarOmegaDotCpl,
-  Kp, Q, Pp,
-  R, K, Acc,
-  SideOmega, SideOmegaDot,
-};
-
 struct ClaimProgram {
   enum class Op {
     Constant,      ///< a rational number
@@ -55,10 +42,8 @@ struct ClaimProgram {
     InputVector,   ///< Kp[j], Q[j], Pp[j]
     SideVector,    ///< r[k], K[k], acc[k]
     SideScalar,    ///< side_omega[k], side_omega_dot[k]
-    Norm2, Perp, Vx, Vy, Dot, Cross,
-    SumJ,          ///< sum over inputs j of child 0
-    SumPairs,      ///< sum over ordered pairs j != l
-    SumPairsLt,    ///< sum over pairs j < l
+    Function,      ///< a word of vectors, of its children: dot, cross, norm2, perp, vx, vy
+    IndexSum,      ///< sum_j, sum_pairs, sum_pairs_lt of child 0
   };
 
   /// An index expression, read once.
@@ -78,8 +63,8 @@ struct ClaimProgram {
   struct Node {
     Op op = Op::Constant;
     bool is_vector = false;
-    const Word* word = nullptr;       ///< for messages
-    Quantity quantity = Quantity::None;
+    const Word* word = nullptr;       ///< the word of a Global, indexed, Function or IndexSum node
+    Evaluation evaluation{};          ///< word->evaluation, what the evaluator's switch reads
     int index = -1;                   ///< into indexes
     int exponent = 1;                 ///< Power
     bool small_integer = false;       ///< Constant, Scale: the constant is `integer`

@@ -1,6 +1,6 @@
 // A claim about a mechanism given as data (a claim file read for a mechanism scene,
 // io/claim_file.h): its ClaimInfo and its two sides in the mechanism vocabulary
-// (claims/mechanism_vocabulary.h). Both sides have the same kind: a number claim compares one
+// (claims/vocabulary.h). Both sides have the same kind: a number claim compares one
 // value, a vector claim both components. Evaluated on a solved mechanism by
 // mechanism/mechanism_data_claim.h.
 #pragma once

@@ -19,7 +19,7 @@ constexpr std::size_t kMaxIntegerDigits = 200;
 using Tok = TokenKind;
 using Token = ExpressionToken;
 
-bool is_value(MechanismKind k) { return k == MechanismKind::Number || k == MechanismKind::Vector; }
+bool is_value(ClaimKind k) { return k == ClaimKind::Number || k == ClaimKind::Vector; }
 
 class Parser {
  public:
@@ -62,7 +62,7 @@ class Parser {
   bool at_op(const char* op) const { return tokens_[i_].kind == Tok::Op && tokens_[i_].text == op; }
 
   MechanismNode binary(MechanismNode::Op op, MechanismNode a, MechanismNode b, size_t from, size_t op_offset) {
-    using K = MechanismKind;
+    using K = ClaimKind;
     MechanismNode n;
     n.op = op;
     n.where = a.where;
@@ -136,7 +136,7 @@ class Parser {
     MechanismNode base = atom(depth);
     if (!at_op("^")) return base;
     const size_t caret = tokens_[i_++].offset;
-    if (base.kind != MechanismKind::Number) fail(caret, "a power of a vector: a vector where a number is expected");
+    if (base.kind != ClaimKind::Number) fail(caret, "a power of a vector: a vector where a number is expected");
     const int e = exponent(caret);
     MechanismNode n;
     n.op = MechanismNode::Op::Power;
@@ -216,7 +216,7 @@ class Parser {
       ++i_;
       MechanismNode n;
       n.op = MechanismNode::Op::Name;
-      n.kind = MechanismKind::Link;  // set from the word's table entry by the caller
+      n.kind = ClaimKind::Link;  // set from the word's table entry by the caller
       n.name = t.text;
       n.text = t.kind == Tok::Quoted ? "\"" + t.text + "\"" : t.text;
       n.where = where(t.offset);
@@ -227,7 +227,7 @@ class Parser {
 
   MechanismNode call(int depth) {
     const Token& t = tokens_[i_++];
-    const std::string signatures = mechanism_word_signatures(t.text);
+    const std::string signatures = word_signatures(Language::Mechanism, t.text);
     if (signatures.empty())
       fail(t.offset, "unknown word '" + t.text +
                          "' (see `linkproof check-claim --vocabulary`; a link, joint or point name is an argument, "
@@ -248,13 +248,13 @@ class Parser {
                                         : "expected ',' or ')', got '" + tokens_[i_].text + "'");
     }
     ++i_;
-    const MechanismWord* w = find_mechanism_word(t.text, static_cast<int>(args.size()));
+    const Word* w = find_word(Language::Mechanism, t.text, static_cast<int>(args.size()));
     if (!w)
       fail(t.offset, fmt::format("'{}' with {} argument{}: it takes {}", t.text, args.size(),
                                  args.size() == 1 ? "" : "s", signatures));
     for (size_t k = 0; k < args.size(); ++k) {
       MechanismNode& a = args[k];
-      const MechanismKind want = w->arguments[k];
+      const ClaimKind want = w->arguments[k];
       const bool is_name = a.op == MechanismNode::Op::Name;
       if (is_value(want) && is_name)
         fail(a.where, a.text, fmt::format("argument {} of {} is {}, but '{}' is a name (names are arguments of words "
@@ -266,7 +266,7 @@ class Parser {
       if (is_value(want) && a.kind != want)
         fail(a.where, a.text, fmt::format("argument {} of {} is {}; got {}{}", k + 1, w->signature, describe(want),
                                           describe(a.kind),
-                                          want == MechanismKind::Number ? ": a vector where a number is expected"
+                                          want == ClaimKind::Number ? ": a vector where a number is expected"
                                                                         : ": a number where a vector is expected"));
       if (is_name) a.kind = want;
     }

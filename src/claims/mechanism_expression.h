@@ -1,4 +1,4 @@
-// A mechanism claim expression: text in the vocabulary of mechanism_vocabulary.h, parsed into a
+// A mechanism claim expression: text in the mechanism language of vocabulary.h, parsed into a
 // tree whose every node has a kind (number or vector), checked before any scene is seen.
 //
 // Grammar (the usual precedence; `^` binds tighter than a sign, as in -x^2 = -(x^2)):
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "claims/claim_expression.h"
-#include "claims/mechanism_vocabulary.h"
+#include "claims/vocabulary.h"
 #include "linkproof/core/exact.h"
 
 namespace linkproof {
@@ -30,10 +30,10 @@ namespace linkproof {
 struct MechanismNode {
   enum class Op { Constant, Add, Subtract, Multiply, Divide, Negate, Power, Call, Name };
   Op op = Op::Constant;
-  MechanismKind kind = MechanismKind::Number;  ///< Number or Vector (a Name: its argument kind)
+  ClaimKind kind = ClaimKind::Number;          ///< Number or Vector (a Name: its argument kind)
   Rational constant;                           ///< Constant
   int exponent = 1;                            ///< Power
-  const MechanismWord* word = nullptr;         ///< Call
+  const Word* word = nullptr;                  ///< Call
   std::string name;                            ///< Name: as written, without quotes
   int index = -1;                              ///< Name: link, joint or point index once bound
   bool is_tracer_point = false;                ///< Name of kind Point: a tracer point, not a joint
@@ -53,7 +53,7 @@ class MechanismExpression {
 
   const std::string& text() const { return text_; }
   const std::string& field() const { return field_; }
-  MechanismKind kind() const { return root_.kind; }
+  ClaimKind kind() const { return root_.kind; }
   const MechanismNode& root() const { return root_; }
   MechanismNode& root() { return root_; }
 

@@ -18,7 +18,6 @@
 #include "cli.h"
 #include "command.h"
 #include "io/claim_file.h"
-#include "claims/mechanism_vocabulary.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
 #include "proof/mechanism_sampling.h"
@@ -52,12 +51,16 @@ struct CheckClaimArgs {
   bool strict = false;
 };
 
+// The one vocabulary table, the words of each language in turn.
 void print_vocabulary(std::ostream& out) {
-  for (const Word& w : vocabulary())
-    fmt::print(out, "{:24} {}\n", w.name + (w.arity == 0 ? "" : w.arity == 1 ? "[.]" : "(a, b)"), w.meaning);
+  const auto print = [&out](Language language) {
+    for (const Word& w : vocabulary())
+      if (w.belongs_to(language)) fmt::print(out, "{:24} {}\n", w.signature, w.meaning);
+  };
+  print(Language::Polygon);
   fmt::print(out, "\nmechanism claims (with --scene or --topology MECHANISM_SCENE; L, M links, P a joint or point, J a "
                   "prismatic joint; names bare or quoted):\n");
-  for (const MechanismWord& w : mechanism_vocabulary()) fmt::print(out, "{:24} {}\n", w.signature, w.meaning);
+  print(Language::Mechanism);
 }
 
 int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path, bool topology, std::ostream& out) {

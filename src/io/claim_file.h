@@ -45,7 +45,7 @@ ClaimFile load_claim_file(const std::string& path);
 
 /// A claim file about a mechanism (docs/claims.md, "Mechanism claims"): the same schema with the
 /// fields id, source, statement, expected, note, lhs and rhs (no n, for_each or reading), the
-/// sides in the mechanism vocabulary (claims/mechanism_vocabulary.h), both of one kind (two
+/// sides in the mechanism vocabulary (claims/vocabulary.h), both of one kind (two
 /// numbers or two vectors). Errors name the file, the claim and, inside an expression, its
 /// line and column. Names are bound to a scene later (mechanism/mechanism_data_claim.h).
 struct MechanismClaimFile {

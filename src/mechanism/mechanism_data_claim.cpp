@@ -33,13 +33,13 @@ void bind(Node& n, const MechanismScene& s, const std::string& field) {
   for (const LinkageJoint& j : g.joints()) joints.push_back(j.name);
   for (const MechanismPoint& p : s.points) points.push_back(p.name);
   switch (n.kind) {
-    case MechanismKind::Link: {
+    case ClaimKind::Link: {
       const auto l = g.find_link(n.name);
       if (!l) fail(fmt::format("unknown link '{}' (the scene's links: {})", n.name, list_names(g.link_names())));
       n.index = *l;
       return;
     }
-    case MechanismKind::Point: {
+    case ClaimKind::Point: {
       if (const auto j = g.find_joint(n.name)) {
         n.index = *j;
         return;
@@ -52,7 +52,7 @@ void bind(Node& n, const MechanismScene& s, const std::string& field) {
       n.is_tracer_point = true;
       return;
     }
-    case MechanismKind::Slider: {
+    case ClaimKind::Slider: {
       const auto j = g.find_joint(n.name);
       if (!j) fail(fmt::format("unknown joint '{}' (joints: {})", n.name, list_names(joints)));
       if (g.joint(*j).type != JointType::Prismatic)
@@ -140,7 +140,7 @@ Value<T> evaluate_node(const Node& n, const MechanismFrameOf<T>& f, SummandScale
 
 template <class T>
 Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) {
-  using Q = MechanismQuantity;
+  using Q = Evaluation;
   using P = PlanePoint<T>;
   const auto& a = n.children;
   const auto value = [&](size_t k) { return evaluate_node(a[k], f, scale); };
@@ -151,7 +151,7 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
     return relative_point_motion(m, field_of(a[2], f), X);
   };
   const auto slide = [&](const std::vector<T>& rates) { return rates[static_cast<size_t>(a[0].index)] * axis_length(a[0], f); };
-  switch (n.word->quantity) {
+  switch (n.word->evaluation) {
     case Q::Omega: return number(field_of(a[0], f).omega);
     case Q::OmegaRelative: return number(field_of(a[0], f).omega - field_of(a[1], f).omega);
     case Q::Alpha: return number(field_of(a[0], f).omega_dot);
@@ -170,7 +170,7 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
     case Q::Centre:
     case Q::CentreAt: {
       // centre_at: the point of L at a constructed position (a vector argument), not a named one.
-      const Vec2<T> X = n.word->quantity == Q::Centre ? position(a[0], f) : as_vector(value(0));
+      const Vec2<T> X = n.word->evaluation == Q::Centre ? position(a[0], f) : as_vector(value(0));
       const P c = construct_curvature_centre(X, relative_point_motion(field_of(a[1], f), field_of(a[2], f), X), n.text);
       if (c.kind == P::Kind::AtInfinity)
         undefined(n, "the centre is at infinity: the point is on the inflection circle (v x a = 0)");
@@ -199,6 +199,7 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
       if (!p.is_finite()) undefined(n, p.reason);
       return vector_value(p.at);
     }
+    default: break;  // a word of the polygon language alone
   }
   LINKPROOF_ASSERT(false, "a mechanism word without an evaluation");
   return {};
@@ -298,7 +299,7 @@ ClaimSides<T> evaluate_mechanism_claim(const MechanismDataClaim& claim, const Me
     return Defined<T>(y ? v.get().y : v.get().x);
   };
   ClaimSides<T> s;
-  if (claim.lhs.kind() == MechanismKind::Vector) {
+  if (claim.lhs.kind() == ClaimKind::Vector) {
     s.instances.push_back({"x", component(l, false), component(r, false), scale.largest});
     s.instances.push_back({"y", component(l, true), component(r, true), scale.largest});
   } else {

@@ -235,15 +235,15 @@ void claim_degeneracies(const MechanismNode& n, const MechanismFrameOf<ex>& f, N
     } else if (n.op == MechanismNode::Op::Call) {
       const auto& a = n.children;
       const auto field = [&](size_t k) { return f.fields[static_cast<size_t>(a[k].index)]; };
-      switch (n.word->quantity) {
-        case MechanismQuantity::Pole:
+      switch (n.word->evaluation) {
+        case Evaluation::Pole:
           out.emplace_back(field(0).omega - field(1).omega,
                            fmt::format("omega({0}) = omega({1}): {2} is at infinity (a relative translation) or undefined",
                                        a[0].text, a[1].text, n.text));
           break;
-        case MechanismQuantity::Centre:
-        case MechanismQuantity::CentreAt: {
-          const Vec2<ex> X = n.word->quantity == MechanismQuantity::CentreAt ? vec(0)
+        case Evaluation::Centre:
+        case Evaluation::CentreAt: {
+          const Vec2<ex> X = n.word->evaluation == Evaluation::CentreAt ? vec(0)
                              : a[0].is_tracer_point                        ? f.point_at[static_cast<size_t>(a[0].index)]
                                                                            : f.joint_at[static_cast<size_t>(a[0].index)];
           const RelativePointMotion<ex> m = relative_point_motion(field(1), field(2), X);
@@ -251,7 +251,7 @@ void claim_degeneracies(const MechanismNode& n, const MechanismFrameOf<ex>& f, N
                                                          "pole, {1} is at infinity or undefined", a[0].text, n.text));
           break;
         }
-        case MechanismQuantity::Meet:
+        case Evaluation::Meet:
           out.emplace_back(cross(vec(1) - vec(0), vec(3) - vec(2)),
                            fmt::format("the lines of {} are parallel or a line is a single point", n.text));
           break;
@@ -272,7 +272,7 @@ ClaimValues claim_values(const MechanismDataClaim& claim, const MechanismFrameOf
   const MechanismValueOf<ex> l = evaluate_mechanism_expression(claim.lhs.root(), f);
   const MechanismValueOf<ex> r = evaluate_mechanism_expression(claim.rhs.root(), f);
   ClaimValues v;
-  if (claim.lhs.kind() == MechanismKind::Vector) {
+  if (claim.lhs.kind() == ClaimKind::Vector) {
     v.residuals = {{"x", l.x - r.x}, {"y", l.y - r.y}};
     v.sides = {l.x, l.y, r.x, r.y};
   } else {

@@ -21,7 +21,8 @@ TEST(ClaimProgram, AnExpressionIsCompiledOncePerProcess) {
   EXPECT_EQ(&p, &compiled_claim(b.expression()));
   EXPECT_NE(&p, &compiled_claim(ClaimExpression::parse("sum_j(omega[j])").expression()));
   // One sum over pairs of one product of four indexed words, each index read once.
-  EXPECT_EQ(p.nodes[static_cast<size_t>(p.root)].op, ClaimProgram::Op::SumPairs);
+  EXPECT_EQ(p.nodes[static_cast<size_t>(p.root)].op, ClaimProgram::Op::IndexSum);
+  EXPECT_EQ(p.nodes[static_cast<size_t>(p.root)].evaluation, Evaluation::SumPairs);
   EXPECT_EQ(p.indexes.size(), 4u);
   for (const auto& index : p.indexes) EXPECT_TRUE(index.affine) << index.written;
 }

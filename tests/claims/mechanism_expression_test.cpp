@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "claims/mechanism_vocabulary.h"
+#include "claims/vocabulary.h"
 #include "linkproof/core/error.h"
 
 namespace linkproof {
@@ -25,21 +25,21 @@ std::pair<std::string, std::string> error_of(const std::string& text) {
 }
 
 TEST(MechanismExpression, KindsOfWordsAndOperators) {
-  EXPECT_EQ(parse("omega(coupler)").kind(), MechanismKind::Number);
-  EXPECT_EQ(parse("omega(\"3\", '1')").kind(), MechanismKind::Number);
-  EXPECT_EQ(parse("vel(B, \"3\") - omega(\"3\")*perp(pos(B) - pos(A))").kind(), MechanismKind::Vector);
-  EXPECT_EQ(parse("dot(acc(P, L, M), vel(P, L))/norm2(pos(P))^2").kind(), MechanismKind::Number);
-  EXPECT_EQ(parse("-pos(P)/2 + meet(pos(A), pos(B), pos(C), pos(D))").kind(), MechanismKind::Vector);
-  EXPECT_EQ(parse("sliding_v(S)^(-1)").kind(), MechanismKind::Number);
+  EXPECT_EQ(parse("omega(coupler)").kind(), ClaimKind::Number);
+  EXPECT_EQ(parse("omega(\"3\", '1')").kind(), ClaimKind::Number);
+  EXPECT_EQ(parse("vel(B, \"3\") - omega(\"3\")*perp(pos(B) - pos(A))").kind(), ClaimKind::Vector);
+  EXPECT_EQ(parse("dot(acc(P, L, M), vel(P, L))/norm2(pos(P))^2").kind(), ClaimKind::Number);
+  EXPECT_EQ(parse("-pos(P)/2 + meet(pos(A), pos(B), pos(C), pos(D))").kind(), ClaimKind::Vector);
+  EXPECT_EQ(parse("sliding_v(S)^(-1)").kind(), ClaimKind::Number);
 }
 
 TEST(MechanismExpression, NamesAreArgumentsBareOrQuoted) {
   const MechanismExpression e = parse("vel(B, \"3\", frame)");
   ASSERT_EQ(e.root().children.size(), 3u);
   EXPECT_EQ(e.root().children[0].name, "B");
-  EXPECT_EQ(e.root().children[0].kind, MechanismKind::Point);
+  EXPECT_EQ(e.root().children[0].kind, ClaimKind::Point);
   EXPECT_EQ(e.root().children[1].name, "3");
-  EXPECT_EQ(e.root().children[2].kind, MechanismKind::Link);
+  EXPECT_EQ(e.root().children[2].kind, ClaimKind::Link);
 }
 
 TEST(MechanismExpression, ErrorsNameLineAndColumn) {
@@ -66,14 +66,15 @@ TEST(MechanismExpression, ErrorsNameLineAndColumn) {
 }
 
 TEST(MechanismVocabulary, EveryWordHasASignatureAndMeaning) {
-  for (const MechanismWord& w : mechanism_vocabulary()) {
-    EXPECT_EQ(find_mechanism_word(w.name, static_cast<int>(w.arguments.size())), &w) << w.name;
+  for (const Word& w : vocabulary()) {
+    if (!w.belongs_to(Language::Mechanism)) continue;
+    EXPECT_EQ(find_word(Language::Mechanism, w.name, w.arity()), &w) << w.name;
     EXPECT_EQ(w.signature.substr(0, w.name.size() + 1), w.name + "(") << w.signature;
     EXPECT_FALSE(w.meaning.empty()) << w.name;
   }
   for (const char* word : {"omega", "alpha", "pos", "vel", "acc", "pole", "centre", "centre_at", "sliding_v", "sliding_a",
                            "axis", "dot", "cross", "perp", "norm2", "vx", "vy", "meet"})
-    EXPECT_FALSE(mechanism_word_signatures(word).empty()) << word;
+    EXPECT_FALSE(word_signatures(Language::Mechanism, word).empty()) << word;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <string>
 
 #include "support/cli_run.h"
 #include "support/counterexample_replay.h"
@@ -123,6 +124,21 @@ TEST(MechanismClaimCli, VocabularyListsTheMechanismWords) {
                         "meet(A, B, C, D)", "norm2(a)", "vx(a)"})
     EXPECT_NE(r.out.find(w), std::string::npos) << w;
   EXPECT_NE(r.out.find("omega_dot_out"), std::string::npos) << "the polygon words are still listed";
+}
+
+// One table: a word of both languages is listed in each with one signature and meaning, and every
+// polygon word as it is written (omega[j], r[k], sum_j(e)), not as a form the checker refuses.
+TEST(MechanismClaimCli, VocabularyListsEachWordAsItIsWritten) {
+  const CliRun r = run_cli({"check-claim", "--vocabulary"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.find("[.]"), std::string::npos) << r.out;
+  for (const char* line : {"omega[j]                 omega[j] = omega_{j,n}", "r[k]                     r[k] = K_{k+1}",
+                           "sum_pairs(e)             sum over ordered pairs", "norm2(a)                 a . a\n"}) {
+    const std::size_t first = r.out.find(line);
+    EXPECT_NE(first, std::string::npos) << line;
+    if (std::string(line).starts_with("norm2"))
+      EXPECT_NE(r.out.find(line, first + 1), std::string::npos) << "norm2 is listed in both languages";
+  }
 }
 
 }  // namespace

@@ -67,7 +67,7 @@ inline void expect_mirrored(const std::vector<MechanismClaim>& catalogue, const 
     if (m.cpp_label.empty()) continue;
     const ClaimSides<Rational> ds = evaluate_mechanism_claim(d, frame);
     const ClaimSides<Rational> cs = c.evaluate(ctx);
-    const bool vector = d.lhs.kind() == MechanismKind::Vector;
+    const bool vector = d.lhs.kind() == ClaimKind::Vector;
     for (const Comparison<Rational>& dc : ds.instances) {
       const std::string label = vector ? m.cpp_label + "." + dc.label_head : m.cpp_label;
       const Comparison<Rational>* cc = find_comparison(cs, label);
