@@ -136,8 +136,9 @@ TEST(MechanismClaimCli, VocabularyListsEachWordAsItIsWritten) {
                            "sum_pairs(e)             sum over ordered pairs", "norm2(a)                 a . a\n"}) {
     const std::size_t first = r.out.find(line);
     EXPECT_NE(first, std::string::npos) << line;
-    if (std::string(line).starts_with("norm2"))
+    if (std::string(line).starts_with("norm2")) {
       EXPECT_NE(r.out.find(line, first + 1), std::string::npos) << "norm2 is listed in both languages";
+    }
   }
 }
 
