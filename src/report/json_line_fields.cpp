@@ -14,6 +14,17 @@ constexpr Verdict kVerdicts[] = {Verdict::Holds, Verdict::Fails, Verdict::Undefi
 
 }  // namespace
 
+json parse_line_object(const std::string& line, const std::string& file, const std::string& where) {
+  json j;
+  try {
+    j = json::parse(line);
+  } catch (const json::parse_error& e) {
+    throw InputError(file, where, std::string("not JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw InputError(file, where, "must be a JSON object");
+  return j;
+}
+
 Verdict line_verdict(const json& j, const std::string& file, const std::string& field) {
   if (j.is_string())
     for (Verdict v : kVerdicts)

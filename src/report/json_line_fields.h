@@ -11,6 +11,9 @@
 
 namespace linkproof {
 
+/// Line `where` of `file` parsed as JSON, which must be an object.
+nlohmann::json parse_line_object(const std::string& line, const std::string& file, const std::string& where);
+
 /// `j[key]`, which must be present and of `type` (number_integer: any integer).
 const nlohmann::json& line_member(const nlohmann::json& j, const char* key, nlohmann::json::value_t type,
                                   const std::string& file, const std::string& where);

@@ -82,6 +82,24 @@ void write_text(std::ostream& out, const MechanismCounterexample& x) {
   if (!line.empty()) fmt::print(out, "      {}\n", line);
 }
 
+nlohmann::json sample_claim_json(const SampleResult& r, bool as_expected, const std::string& scope) {
+  using json = nlohmann::json;
+  return {{"id", r.info.id},
+          {"source", r.info.source},
+          {"statement", r.info.statement},
+          {"expected", std::string(to_string(r.info.expected))},
+          {"verdict", to_string(r.verdict)},
+          {"as_expected", as_expected},
+          {"scope", scope},
+          {"compared", r.compared},
+          {"undefined_configurations", r.undefined},
+          {"inconclusive_configurations", r.inconclusive},
+          {"undefined", r.undefined_quantity.empty()
+                            ? json(nullptr)
+                            : json{{"quantity", r.undefined_quantity}, {"reason", r.undefined_reason}}},
+          {"counterexample", r.counterexample ? to_json(*r.counterexample) : json(nullptr)}};
+}
+
 nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status) {
   using json = nlohmann::json;
   json claims = json::array();
@@ -89,22 +107,8 @@ nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status)
   for (size_t k = 0; k < run.claims.size(); ++k) {
     const SampleResult& r = run.claims[k];
     ok += status.as_expected[k];
-    json c = {{"id", r.info.id},
-              {"source", r.info.source},
-              {"statement", r.info.statement},
-              {"expected", std::string(to_string(r.info.expected))},
-              {"verdict", to_string(r.verdict)},
-              {"as_expected", static_cast<bool>(status.as_expected[k])},
-              {"scope", scope(r, run)},
-              {"compared", r.compared},
-              {"undefined_configurations", r.undefined},
-              {"inconclusive_configurations", r.inconclusive},
-              {"undefined", r.undefined_quantity.empty()
-                                ? json(nullptr)
-                                : json{{"quantity", r.undefined_quantity}, {"reason", r.undefined_reason}}},
-              {"counterexample", json(nullptr)},
-              {"seconds", r.seconds}};
-    if (r.counterexample) c["counterexample"] = to_json(*r.counterexample);
+    json c = sample_claim_json(r, status.as_expected[k], scope(r, run));
+    c["seconds"] = r.seconds;
     claims.push_back(std::move(c));
   }
   return {{"mode", "topology"},

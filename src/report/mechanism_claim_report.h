@@ -31,6 +31,10 @@ std::string inconclusive_note(const SampleResult& r);
 
 /// `status`: the program's decisions (report/claims_status.h), one per claim of `run`.
 nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status);
+
+/// The keys of a claim judged on random configurations that `check-claim --topology --count` and
+/// `sweep --topology` share (docs/claims.md, docs/sweeps.md), with `scope` as each words it.
+nlohmann::json sample_claim_json(const SampleResult& r, bool as_expected, const std::string& scope);
 void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsStatus& status);
 
 }  // namespace linkproof

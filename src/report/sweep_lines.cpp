@@ -73,13 +73,7 @@ void check_evidence_json(const json& j, const std::string& file, const std::stri
 
 SweepLine parse_sweep_line(const std::string& line, const std::string& file, long line_number) {
   const std::string where = fmt::format("line {}", line_number);
-  json j;
-  try {
-    j = json::parse(line);
-  } catch (const json::parse_error& e) {
-    throw InputError(file, where, std::string("not JSON: ") + e.what());
-  }
-  if (!j.is_object()) throw InputError(file, where, "must be a JSON object");
+  json j = parse_line_object(line, file, where);
   SweepLine out;
   if (j.contains("summary")) {
     out.summary = line_member(j, "summary", json::value_t::object, file, where);

@@ -30,20 +30,20 @@ std::string describe(const TopologySweepIdentity& id) {
                      id.claims_digest, id.seed, id.count, to_string(id.arithmetic));
 }
 
+json identity_json(const TopologySweepIdentity& id) {
+  return {{"topology", id.topology},   {"scene_digest", id.scene_digest}, {"claims_digest", id.claims_digest},
+          {"seed", id.seed},           {"count", id.count},               {"arithmetic", std::string(to_string(id.arithmetic))}};
+}
+
 std::string topology_case_line(const TopologySweepCase& c, const TopologySweepIdentity& id,
                                const std::vector<std::string>& claim_ids) {
   json verdicts = json::object();
   for (size_t k = 0; k < c.verdicts.size(); ++k) verdicts[claim_ids[k]] = std::string(to_string(c.verdicts[k]));
-  json line{{"case", c.index},
-            {"topology", id.topology},
-            {"scene_digest", id.scene_digest},
-            {"claims_digest", id.claims_digest},
-            {"seed", id.seed},
-            {"count", id.count},
-            {"arithmetic", std::string(to_string(id.arithmetic))},
-            {"singular", c.singular},
-            {"degenerate", c.degenerate},
-            {"verdicts", verdicts}};
+  json line = identity_json(id);  // an object's keys are written sorted, whatever the order here
+  line["case"] = c.index;
+  line["singular"] = c.singular;
+  line["degenerate"] = c.degenerate;
+  line["verdicts"] = verdicts;
   line["digest"] = sweep_line_digest(line.dump());
   return line.dump();
 }
@@ -51,13 +51,7 @@ std::string topology_case_line(const TopologySweepCase& c, const TopologySweepId
 TopologySweepLine parse_topology_line(const std::string& line, const std::string& file, long line_number,
                                       const std::vector<std::string>& claim_ids) {
   const std::string where = fmt::format("line {}", line_number);
-  json j;
-  try {
-    j = json::parse(line);
-  } catch (const json::parse_error& e) {
-    throw InputError(file, where, std::string("not JSON: ") + e.what());
-  }
-  if (!j.is_object()) throw InputError(file, where, "must be a JSON object");
+  json j = parse_line_object(line, file, where);
   TopologySweepLine out;
   if (j.contains("summary")) {
     out.summary = line_member(j, "summary", json::value_t::object, file, where);

@@ -41,6 +41,9 @@ struct TopologySweepIdentity {
 
 /// "fourbar-seed001 (scene 1a2b..., claims 3c4d..., seed 3, count 200, exact)", for messages.
 std::string describe(const TopologySweepIdentity& id);
+/// The identity's keys, as a case line and the --json report write them: topology, scene_digest,
+/// claims_digest, seed, count, arithmetic.
+nlohmann::json identity_json(const TopologySweepIdentity& id);
 
 /// One case as a result-file line (no trailing newline); `claim_ids` in the claims' order.
 std::string topology_case_line(const TopologySweepCase& c, const TopologySweepIdentity& id,

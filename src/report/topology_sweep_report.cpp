@@ -61,38 +61,20 @@ json report_json(const TopologySweepReport& report, const TopologySweepIdentity&
     const SampleResult& r = run.claims[k];
     const TopologySweepClaim& x = report.claims[k];
     ok += status.as_expected[k];
-    json c = {{"id", r.info.id},
-              {"source", r.info.source},
-              {"statement", r.info.statement},
-              {"expected", std::string(to_string(r.info.expected))},
-              {"verdict", to_string(r.verdict)},
-              {"as_expected", static_cast<bool>(status.as_expected[k])},
-              {"scope", scope(r, x, run, id)},
-              {"compared", r.compared},
-              {"undefined_configurations", r.undefined},
-              {"inconclusive_configurations", r.inconclusive},
-              {"failing_configurations", x.fails},
-              {"first_failing_configuration", x.first_failing_case ? json(*x.first_failing_case) : json(nullptr)},
-              {"undefined", r.undefined_quantity.empty()
-                                ? json(nullptr)
-                                : json{{"quantity", r.undefined_quantity}, {"reason", r.undefined_reason}}},
-              {"counterexample", r.counterexample ? to_json(*r.counterexample) : json(nullptr)}};
+    json c = sample_claim_json(r, status.as_expected[k], scope(r, x, run, id));
+    c["failing_configurations"] = x.fails;
+    c["first_failing_configuration"] = x.first_failing_case ? json(*x.first_failing_case) : json(nullptr);
     claims.push_back(std::move(c));
   }
-  json j = {{"mode", "topology_sweep"},
-            {"topology", id.topology},
-            {"scene_digest", id.scene_digest},
-            {"claims_digest", id.claims_digest},
-            {"seed", id.seed},
-            {"count", id.count},
-            {"arithmetic", std::string(to_string(id.arithmetic))},
+  json j = identity_json(id);
+  j.update({{"mode", "topology_sweep"},
             {"configurations", {{"generated", run.generated}, {"singular_skipped", run.singular},
                                 {"solved", run.solved}, {"degenerate_failures_skipped", run.degenerate}}},
             {"rests_on", rests_on(id)},
             {"claims", claims},
             {"summary", {{"claims", run.claims.size()}, {"as_expected", ok},
                          {"not_as_expected", static_cast<int>(run.claims.size()) - ok}}},
-            {"exit_status", status.exit_status}};
+            {"exit_status", status.exit_status}});
   if (!shard.whole()) j["shard"] = fmt::format("{}/{}", shard.k, shard.n);
   return j;
 }
