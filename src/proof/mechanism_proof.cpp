@@ -194,9 +194,8 @@ SymbolicMotion solve_symbolically(const MechanismScene& s, const SymbolicConfigu
 
 // p(x, delta) with delta = 1/det as a polynomial in x alone: det^k p, k the degree in delta. For
 // det != 0 it vanishes exactly where p does, so p is zero on the configurations iff this is.
-// p with 1/det A for delta, times the least power det A^k that clears it: with c_i the
-// coefficient of delta^i (i = l..k), sum c_i det^(k-i), by Horner's rule. The expansions are the
-// normalizer's (its deadline; GiNaC's own expand of such products costs quadratically).
+// With c_i the coefficient of delta^i (i = l..k) it is sum c_i det^(k-i), by Horner's rule; the
+// expansions are the normalizer's (under its deadline; GiNaC's expand of such products is quadratic).
 ex clear_delta(const ex& p, const SymbolicMotion& m, RationalNormalizer& normalizer) {
   const ex e = GiNaC::expand(p);
   if (!e.has(m.delta)) return e;
