@@ -58,7 +58,11 @@ ROWS = [
     {"row": "random exact pentagons, every claim, one core", "bench": r"^BM_ExactCheckAllClaims/5$",
      "goal": ("min_per_second", 10000), "note": ">= 10,000/s"},
     # Rows of the proof, count and mechanism benchmarks (another part of issue 13).
-    {"row": "proofs", "bench": r"^BM_Prove", "goal": None},
+    {"row": "proofs", "bench": r"^BM_Prove(Eq22AllN|PerN)", "goal": None},
+    {"row": "every bundled claim proved, default options (`prove`)", "bench": r"^BM_ProveAllBundledClaims(/|$)",
+     "goal": ("max_seconds", 10.0), "note": "<= 10 s"},
+    {"row": "`count --n 3..200`, every claim of every n", "bench": r"^BM_CountRange/200(/|$)",
+     "goal": ("max_seconds", 30.0), "note": "<= 30 s"},
     {"row": "count, every claim of one n, n = 60", "bench": r"^BM_CountClaims/60$", "goal": None},
     {"row": "count, every claim of one n, n = 200", "bench": r"^BM_CountClaims/200$", "goal": None,
      "note": "`count --n 3..200` <= 30 s in all (143 s by `time`, README)"},

@@ -4,8 +4,8 @@
 //                             n = 4..8 (goal < 1 s)
 //   BM_ProvePerN/n            `prove --claim eq22 --n n`: the whole (22) in symbolic coordinates
 //                             at one n (goal: n >= 12 within 60 s)
-//   BM_ProveAllBundledClaims  `prove --ladder-seconds 0` on verify/claims/dijksman1966.yaml
-//                             (goal <= 10 s)
+//   BM_ProveAllBundledClaims  `prove` on verify/claims/dijksman1966.yaml, default options: every
+//                             proof, no per-n re-check of claims proved for every n (goal <= 10 s)
 //   BM_CountRange/nmax        `count --n 3..nmax`, every claim of every n (goal <= 30 s at 200)
 //   BM_MechanismChain/loops   the exact symbolic-closure solve of a chain of four-bar loops
 //                             (mechanism_chain.h; goal <= 1 s at 100 loops)
@@ -62,7 +62,7 @@ void BM_ProveAllBundledClaims(benchmark::State& state) {
     GroundTruthEngine engine;
     int not_as_expected = 0;
     for (const DataClaim& c : dijksman1966::claim_file().claims)
-      not_as_expected += prove_claim(engine, c, without_ladder()).is_as_expected() ? 0 : 1;
+      not_as_expected += prove_claim(engine, c, ProveOptions{}).is_as_expected() ? 0 : 1;
     if (not_as_expected) state.SkipWithError("a bundled claim is not as expected");
   }
 }

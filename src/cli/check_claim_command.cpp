@@ -45,7 +45,7 @@ struct CheckClaimArgs {
   bool count_given = false;
   double proof_seconds = 60;
   std::string arith = "exact";
-  double ladder_seconds = 1.0;
+  std::optional<double> ladder_seconds;  // given: per-n proofs also re-check claims proved for every n
   bool json = false;
   bool vocabulary = false;
   bool strict = false;
@@ -192,12 +192,13 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
   std::vector<ProofResult> results;
   for (const DataClaim& c : file.claims) {
     ProveOptions o;
-    o.ladder_seconds = a.ladder_seconds;
+    o.ladder_seconds = a.ladder_seconds.value_or(o.ladder_seconds);
+    o.recheck_proved = a.ladder_seconds.has_value() || (!a.n_range.empty() && lo != hi);
     o.search.seed = a.seed;
     o.search.n_min = lo;
     o.search.n_max = std::max(lo, std::min(hi, 8));
     if (!a.n_range.empty() && lo == hi) o.only_n = lo;
-    check_prove_limits(o.only_n, a.ladder_seconds);
+    check_prove_limits(o.only_n, o.ladder_seconds);
     if (!a.n_range.empty() && lo != hi) o.n_max = hi;
     ProofResult r = prove_claim(engine, c, o);
     // Only a claim with no symbolic form is sampled; any other error stays an error.
@@ -242,7 +243,9 @@ void add_check_claim_command(CLI::App& app, Action& action) {
                 "arithmetic of the --scene check and of the random instances judged when no proof is found: "
                 "exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help); proofs and "
                 "counterexample shrinking are exact");
-  c->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs per claim (default 1)")
+  c->add_option("--ladder-seconds", a.ladder_seconds,
+                "time for per-n proofs per claim (default 1, where a proof leaves part of the range uncovered; "
+                "given, or with --n LO..HI, they also re-check claims proved for every n)")
       ->check(seconds_validator());
   c->add_flag("--vocabulary", a.vocabulary, "print the names a claim may use");
   c->add_flag("--json", a.json, "print JSON");

@@ -17,7 +17,7 @@ struct ProveArgs {
   std::vector<std::string> claims;
   std::optional<int> n;
   std::string file;
-  double ladder_seconds = 1.0;
+  std::optional<double> ladder_seconds;  // given: per-n proofs also re-check claims proved for every n
   int n_max = 0;
   bool json = false;
   bool strict = false;
@@ -54,12 +54,13 @@ int run_topology(const ProveArgs& a, std::ostream& out) {
 int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
   if (!a.topology.empty()) return run_topology(a, out);
   const ClaimFile file = a.file.empty() ? dijksman1966::claim_file() : load_claim_file(a.file);
-  check_prove_limits(a.n, a.ladder_seconds);
-  const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   ProveOptions o;
+  check_prove_limits(a.n, a.ladder_seconds.value_or(o.ladder_seconds));
+  const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   o.only_n = a.n;
-  o.ladder_seconds = a.ladder_seconds;
+  o.ladder_seconds = a.ladder_seconds.value_or(o.ladder_seconds);
   o.n_max = a.n_max;
+  o.recheck_proved = a.ladder_seconds.has_value() || a.n_max > 0;
   GroundTruthEngine engine;
   std::vector<ProofResult> results;
   for (const DataClaim* c : chosen) {
@@ -80,7 +81,9 @@ void add_prove_command(CLI::App& app, Action& action) {
   p->add_option("--claim", a.claims, "claim id (repeatable; default: every claim), e.g. dijksman1966.eq22 or eq22");
   p->add_option("--n", a.n, "prove for this number of sides only");
   p->add_option("--file", a.file, "claim file (default: the bundled verify/claims/dijksman1966.yaml)");
-  p->add_option("--ladder-seconds", a.ladder_seconds, "time for per-n proofs n = 4, 5, ... per claim (default 1)")
+  p->add_option("--ladder-seconds", a.ladder_seconds,
+                "time for per-n proofs n = 4, 5, ... per claim (default 1: where a proof leaves part of the range "
+                "uncovered; given, or with --n-max, they also re-check claims proved for every n)")
       ->check(seconds_validator());
   p->add_option("--n-max", a.n_max, "stop the per-n ladder at this n")
       ->check(int_range_validator(4, kMaxClaimSides));

@@ -39,7 +39,7 @@ struct ReportArgs {
   std::string out = ".";
   std::vector<std::string> claims;
   std::optional<int> n;
-  double ladder_seconds = 1.0;
+  std::optional<double> ladder_seconds;  // given: per-n proofs also re-check claims proved for every n
   std::optional<std::string> arith;  // polygon scenes; default: the scene's ask, else exact
   bool numerics = false;
   bool plans = false;
@@ -52,7 +52,7 @@ std::string command_line(const ReportArgs& a) {
   if (a.out != ".") c += " --out " + a.out;
   for (const auto& id : a.claims) c += " --claim " + id;
   if (a.n) c += " --n " + std::to_string(*a.n);
-  if (a.ladder_seconds != 1.0) c += fmt::format(" --ladder-seconds {}", a.ladder_seconds);
+  if (a.ladder_seconds) c += fmt::format(" --ladder-seconds {}", *a.ladder_seconds);
   if (a.arith) c += " --arith " + *a.arith;
   if (a.numerics) c += " --numerics";
   if (a.plans) c += " --plans";
@@ -95,11 +95,12 @@ report::Reproduce reproduce_of(const ReportArgs& a, std::string seed) {
 
 int report_claim_file(const ReportArgs& a, const std::string& text, std::ostream& out, std::ostream& err) {
   const ClaimFile file = parse_user_claim_file(text, a.input);
-  check_prove_limits(a.n, a.ladder_seconds);
-  const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   ProveOptions o;
+  check_prove_limits(a.n, a.ladder_seconds.value_or(o.ladder_seconds));
+  const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   o.only_n = a.n;
-  o.ladder_seconds = a.ladder_seconds;
+  o.ladder_seconds = a.ladder_seconds.value_or(o.ladder_seconds);
+  o.recheck_proved = a.ladder_seconds.has_value();
   GroundTruthEngine engine;
   std::vector<ProofResult> results;
   for (const DataClaim* c : chosen)
@@ -165,7 +166,9 @@ void add_report_command(CLI::App& app, Action& action) {
   r->add_option("--out", a.out, "directory to write into (created; default .)");
   r->add_option("--claim", a.claims, "claim files: the claim to prove (repeatable; default every claim), e.g. eq22");
   r->add_option("--n", a.n, "claim files: prove for this number of sides only");
-  r->add_option("--ladder-seconds", a.ladder_seconds, "claim files: time for per-n proofs per claim (default 1)");
+  r->add_option("--ladder-seconds", a.ladder_seconds,
+                "claim files: time for per-n proofs per claim (default 1, where a proof leaves part of the range "
+                "uncovered; given, they also re-check claims proved for every n)");
   r->add_option("--arith", a.arith,
                 "polygon scenes: the arithmetic of the check (default: the scene's `ask: [arithmetic: ...]`, else exact)");
   r->add_flag("--numerics", a.numerics, "polygon scenes: add the numerics section (every floating-point arithmetic)");

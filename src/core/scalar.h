@@ -85,19 +85,21 @@ struct ScalarTraits<Tracked<F>> {
 /// q = p/d with |p|, d < 2^53 (both exact in double), or false: the fast path of from_rational.
 bool as_small_fraction(const Rational& q, double& p, double& d);
 
+/// p/d (|p|, d < 2^53, d > 0, both exact in double) as a Tracked<double>. The IEEE quotient is
+/// correctly rounded; the remainder p - v d of a correctly rounded quotient is a double (no
+/// underflow: |v| >= 2^-53) and fma computes it exactly, so |p/d - v| = |r| / d, rounded up.
+inline Tracked<double> tracked_from_small_fraction(double p, double d) {
+  const double v = p / d;
+  const double r = std::fma(-v, d, p);
+  return {v, r == 0 ? 0.0 : next_up(std::abs(r) / d)};
+}
+
 template <class F>
 Tracked<F> ScalarTraits<Tracked<F>>::from_rational(const Rational& q) {
   if constexpr (std::is_same_v<F, double>) {
-    // The coordinates and rates of random configurations are such fractions: no exact
-    // arithmetic. The IEEE quotient is correctly rounded; the remainder p - v d of a correctly
-    // rounded quotient is a double (no underflow: |v| >= 2^-53) and fma computes it exactly, so
-    // |q - v| = |r| / d, rounded up.
+    // Coordinates and rates of scenes are mostly such fractions: no exact arithmetic.
     double p = 0, d = 1;
-    if (as_small_fraction(q, p, d)) {
-      const double v = p / d;
-      const double r = std::fma(-v, d, p);
-      return {v, r == 0 ? 0.0 : next_up(std::abs(r) / d)};
-    }
+    if (as_small_fraction(q, p, d)) return tracked_from_small_fraction(p, d);
   }
   F v = ScalarTraits<F>::from_rational(q);
   if constexpr (Traits::has_infinity) {
@@ -132,6 +134,18 @@ T from_int(long k) {
     if (-exact <= k && k <= exact) return T(static_cast<decltype(T{}.v)>(k), typename T::Radius{});
   }
   return ScalarTraits<T>::from_rational(Rational(k));
+}
+/// p/d in T (d > 0), the same value as from_rational<T>(Rational(p) / d); for Tracked<double>
+/// without exact arithmetic (random configurations draw such fractions by the thousand).
+template <class T>
+T from_fraction(long p, long d) {
+  constexpr long exact = 1L << 53;
+  if constexpr (std::is_same_v<T, Tracked<double>>) {
+    if (-exact < p && p < exact && 0 < d && d < exact)
+      return tracked_from_small_fraction(static_cast<double>(p), static_cast<double>(d));
+  }
+  if (d == 1) return from_int<T>(p);
+  return ScalarTraits<T>::from_rational(Rational(p) / Rational(d));
 }
 template <class T>
 bool is_zero(const T& x) { return ScalarTraits<T>::is_zero(x); }

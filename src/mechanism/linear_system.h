@@ -58,53 +58,104 @@ LinearSolution<T> solve_linear_system_sparse(const DenseMatrix<T>& A, const std:
   return out;
 }
 
+/// A x = b for one matrix A and any number of right-hand sides b: the velocity and acceleration
+/// systems of a mechanism share their matrix, so it is eliminated once.
+///   exact (Rational, GiNaC):  A is kept and each solve runs the sparse route (its cost is in
+///                             the rationals, not in repeating the elimination);
+///   floating point:           A is eliminated at construction (dense Gaussian elimination with
+///                             partial pivoting), recording each row exchange and each
+///                             multiplier; a solve replays them on b. The pivots depend on A
+///                             alone, so a replayed b is the same bits as eliminating [A | b].
+template <class T>
+class LinearSystem {
+ public:
+  explicit LinearSystem(DenseMatrix<T> A) : a_(std::move(A)) {
+    if constexpr (!ScalarTraits<T>::is_exact) eliminate();
+  }
+
+  /// The rank of A.
+  int rank() const {
+    if constexpr (ScalarTraits<T>::is_exact)
+      return solve_linear_system_sparse(a_, std::vector<T>(a_.size(), from_int<T>(0))).rank;
+    else
+      return static_cast<int>(pivot_col_.size());
+  }
+
+  LinearSolution<T> solve(std::vector<T> b) const {
+    if constexpr (ScalarTraits<T>::is_exact) {
+      return solve_linear_system_sparse(a_, b);
+    } else {
+      for (const Step& st : steps_) {
+        if (st.exchange) std::swap(b[st.row], b[st.other]);
+        else b[st.other] = b[st.other] - st.factor * b[st.row];
+      }
+      LinearSolution<T> out;
+      const size_t rank = pivot_col_.size(), n = columns();
+      out.rank = static_cast<int>(rank);
+      for (size_t r = rank; r < a_.size(); ++r)
+        if (!negligible(b[r])) out.consistent = false;
+      if (out.consistent && rank == n) {
+        out.x.assign(n, from_int<T>(0));
+        for (size_t r = 0; r < rank; ++r) out.x[pivot_col_[r]] = b[r] / a_[r][pivot_col_[r]];
+      }
+      return out;
+    }
+  }
+
+ private:
+  // One operation on the right-hand side: exchange rows `row` and `other`, or
+  // b[other] -= factor * b[row].
+  struct Step {
+    bool exchange = false;
+    size_t row = 0, other = 0;
+    T factor{};
+  };
+
+  size_t columns() const { return a_.empty() ? 0 : a_[0].size(); }
+
+  // A pivot counts as zero when |p| <= max(m, n) * u * max|A_ij| (see the file comment).
+  bool negligible(const T& v) const { return std::abs(ScalarTraits<T>::to_double(v)) <= threshold_; }
+
+  void eliminate() {
+    const size_t m = a_.size(), n = columns();
+    double amax = 0;
+    for (const auto& row : a_)
+      for (const auto& v : row) amax = std::max(amax, std::abs(ScalarTraits<T>::to_double(v)));
+    threshold_ = static_cast<double>(std::max(m, n)) * std::numeric_limits<double>::epsilon() / 2 * amax;
+    size_t row = 0;
+    for (size_t col = 0; col < n && row < m; ++col) {
+      size_t best = m;
+      double best_mag = -1;
+      for (size_t r = row; r < m; ++r) {
+        if (negligible(a_[r][col])) continue;
+        const double mag = std::abs(ScalarTraits<T>::to_double(a_[r][col]));
+        if (mag > best_mag) best = r, best_mag = mag;
+      }
+      if (best == m) continue;
+      if (best != row) {
+        std::swap(a_[row], a_[best]);
+        steps_.push_back({true, row, best, T{}});
+      }
+      for (size_t r = 0; r < m; ++r) {
+        if (r == row || is_zero(a_[r][col])) continue;
+        const T f = a_[r][col] / a_[row][col];
+        for (size_t c = col; c < n; ++c) a_[r][c] = a_[r][c] - f * a_[row][c];
+        steps_.push_back({false, row, r, f});
+      }
+      pivot_col_.push_back(col);
+      ++row;
+    }
+  }
+
+  DenseMatrix<T> a_;
+  double threshold_ = 0;
+  std::vector<Step> steps_;
+  std::vector<size_t> pivot_col_;
+};
+
 template <class T>
 LinearSolution<T> solve_linear_system(DenseMatrix<T> A, std::vector<T> b) {
-  if constexpr (ScalarTraits<T>::is_exact) return solve_linear_system_sparse(A, b);
-  const size_t m = A.size();
-  const size_t n = m == 0 ? 0 : A[0].size();
-  double threshold = 0;
-  if constexpr (!ScalarTraits<T>::is_exact) {
-    double amax = 0;
-    for (const auto& row : A)
-      for (const auto& v : row) amax = std::max(amax, std::abs(ScalarTraits<T>::to_double(v)));
-    threshold = static_cast<double>(std::max(m, n)) * std::numeric_limits<double>::epsilon() / 2 * amax;
-  }
-  const auto negligible = [&](const T& v) {
-    if constexpr (ScalarTraits<T>::is_exact) return is_zero(v);
-    else return std::abs(ScalarTraits<T>::to_double(v)) <= threshold;
-  };
-  LinearSolution<T> out;
-  std::vector<size_t> pivot_col;
-  size_t row = 0;
-  for (size_t col = 0; col < n && row < m; ++col) {
-    size_t best = m;
-    double best_mag = -1;
-    for (size_t r = row; r < m; ++r) {
-      if (negligible(A[r][col])) continue;
-      const double mag = std::abs(ScalarTraits<T>::to_double(A[r][col]));
-      if (mag > best_mag) best = r, best_mag = mag;
-    }
-    if (best == m) continue;
-    std::swap(A[row], A[best]);
-    std::swap(b[row], b[best]);
-    for (size_t r = 0; r < m; ++r) {
-      if (r == row || is_zero(A[r][col])) continue;
-      const T f = A[r][col] / A[row][col];
-      for (size_t c = col; c < n; ++c) A[r][c] = A[r][c] - f * A[row][c];
-      b[r] = b[r] - f * b[row];
-    }
-    pivot_col.push_back(col);
-    ++row;
-  }
-  out.rank = static_cast<int>(row);
-  for (size_t r = row; r < m; ++r)
-    if (!negligible(b[r])) out.consistent = false;
-  if (out.consistent && row == n) {
-    out.x.assign(n, from_int<T>(0));
-    for (size_t r = 0; r < row; ++r) out.x[pivot_col[r]] = b[r] / A[r][pivot_col[r]];
-  }
-  return out;
+  return LinearSystem<T>(std::move(A)).solve(std::move(b));
 }
 
 }  // namespace linkproof

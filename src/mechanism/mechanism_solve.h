@@ -43,6 +43,19 @@ struct InputValue {
 
 /// The input rows: one unit row per input, in the unknown's column; the right-hand sides are the
 /// inputs' rates, or `values[k]` when given.
+/// The inputs' rates (or, second_order, their derivatives) appended to b: the right-hand side of
+/// the input rows.
+template <class T>
+void append_input_rates(const std::vector<MechanismInput>& inputs, std::vector<T>& b, bool second_order,
+                        const std::vector<InputValue<T>>* values = nullptr) {
+  for (size_t k = 0; k < inputs.size(); ++k) {
+    if (values)
+      b.push_back(second_order ? (*values)[k].rate_dot : (*values)[k].rate);
+    else
+      b.push_back(from_rational<T>(second_order ? inputs[k].rate_dot : inputs[k].rate));
+  }
+}
+
 template <class T>
 void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inputs, DenseMatrix<T>& A,
                        std::vector<T>& b, bool second_order, const std::string& source,
@@ -57,11 +70,8 @@ void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inpu
     std::vector<T> row(static_cast<size_t>(g.unknown_count()), from_int<T>(0));
     row[static_cast<size_t>(col)] = from_int<T>(1);
     A.push_back(std::move(row));
-    if (values)
-      b.push_back(second_order ? (*values)[k].rate_dot : (*values)[k].rate);
-    else
-      b.push_back(from_rational<T>(second_order ? in.rate_dot : in.rate));
   }
+  append_input_rates(inputs, b, second_order, values);
 }
 
 /// Solves velocity then acceleration. `A` is the constraint matrix; `acceleration_rhs(qdot)`
@@ -74,7 +84,7 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
                                      const JointGeometry<T>& geo = {}) {
   const size_t N = static_cast<size_t>(g.unknown_count());
   MechanismSolution<T> s;
-  s.rank = solve_linear_system<T>(A, std::vector<T>(A.size(), from_int<T>(0))).rank;
+  s.rank = LinearSystem<T>(A).rank();
   s.mobility = static_cast<int>(N) - s.rank;
   if (s.mobility == 0)
     throw InputError(source, "mechanism.joints",
@@ -88,7 +98,9 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
   DenseMatrix<T> Av = A;
   std::vector<T> bv(A.size(), from_int<T>(0));
   append_input_rows(g, inputs, Av, bv, false, source, values);
-  const LinearSolution<T> vel = solve_linear_system<T>(Av, bv);
+  // Velocity and acceleration: one matrix (the constraints and the input rows), two right-hand sides.
+  const LinearSystem<T> system(std::move(Av));
+  const LinearSolution<T> vel = system.solve(std::move(bv));
   if (vel.rank < static_cast<int>(N))
     throw InputError(source, "mechanism.inputs",
                      "the inputs do not fix the motion: some input is dependent on the others or on the constraints "
@@ -96,11 +108,10 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
   if (!vel.consistent)
     throw InputError(source, "mechanism.inputs", "the inputs contradict the constraints");
   s.qdot = vel.x;
-  DenseMatrix<T> Aa = A;
   std::vector<T> ba = acceleration_rhs(s.qdot);
   LINKPROOF_ASSERT(ba.size() == A.size(), "acceleration right-hand side has the wrong size");
-  append_input_rows(g, inputs, Aa, ba, true, source, values);
-  const LinearSolution<T> acc = solve_linear_system<T>(Aa, ba);
+  append_input_rates(inputs, ba, true, values);
+  const LinearSolution<T> acc = system.solve(std::move(ba));
   if (!acc.consistent || acc.x.size() != N)
     throw InputError(source, "mechanism.inputs", "the acceleration inputs contradict the constraints");
   s.qddot = acc.x;

@@ -211,9 +211,9 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
         }
       }
       // 3. Per-n proofs for the rest of the range while the budget lasts: a finite range is
-      //    covered by them when the lift does not apply; otherwise they re-check it.
+      //    covered by them when the lift does not apply; otherwise they re-check it, if asked.
       const auto ladder_start = Clock::now();
-      for (int n = lo; !disproved && (hi == 0 || n <= hi); ++n) {
+      for (int n = lo; !disproved && (!all_n || o.recheck_proved) && (hi == 0 || n <= hi); ++n) {
         if (std::find(r.proved_n.begin(), r.proved_n.end(), n) != r.proved_n.end()) continue;
         if (o.n_max && n > o.n_max) break;
         if (since(ladder_start) > o.ladder_seconds) break;

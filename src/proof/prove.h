@@ -88,6 +88,12 @@ struct ProveOptions {
   std::optional<int> only_n;           ///< prove for this n only (no proof for every n)
   int n_max = 0;                       ///< per-n ladder: up to this n (0: until the budget ends)
   double ladder_seconds = 1.0;         ///< time budget of the per-n ladder, per claim
+  /// The ladder's job. Where the proofs so far leave part of a claim's range uncovered (the lift
+  /// lemma does not apply), it adds per-n proofs n = 4, 5, ... while the budget lasts: coverage.
+  /// Where they cover the whole range, more per-n proofs only re-check it, so they run only when
+  /// this is set (the command line sets it when --ladder-seconds or --n-max is given): by
+  /// default such a claim's result does not depend on how fast the machine is.
+  bool recheck_proved = false;
   CounterexampleSearch search;         ///< for disproofs, and before every positive verdict
 };
 

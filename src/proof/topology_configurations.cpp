@@ -17,8 +17,7 @@ namespace linkproof {
 namespace {
 
 // Rational unit directions (Pythagorean triples): |u| = 1 exactly, so sliding_v is rational.
-const Vec2<Rational> kUnitDirections[] = {
-    {1, 0}, {Rational(3) / 5, Rational(4) / 5}, {Rational(5) / 13, Rational(12) / 13}, {Rational(8) / 17, Rational(15) / 17}};
+const Vec2<SmallFraction> kUnitDirections[] = {{{1, 1}, {0, 1}}, {{3, 5}, {4, 5}}, {{5, 13}, {12, 13}}, {{8, 17}, {15, 17}}};
 
 using Layout = TopologyLayout;
 
@@ -28,21 +27,28 @@ MechanismScene build_scene(const MechanismScene& topology, const Layout& layout,
   return topology_configuration(topology, layout, c, name);
 }
 
-Rational random_rate(SplitMix64& rng, bool nonzero) {
+SmallFraction random_rate(SplitMix64& rng, bool nonzero) {
   long p = rng.uniform(-9, 9);
   if (nonzero && p == 0) p = 1;
-  return Rational(p) / Rational(rng.uniform(1, 4));
+  return {p, rng.uniform(1, 4)};
 }
 
-Config random_config(const MechanismScene& topology, const Layout& layout, std::uint64_t seed, int index, int range) {
+// Configuration `index` of `seed`: integer positions in [-range, range], Pythagorean axes, rates
+// p/q with |p| <= 9, q <= 4 (the input rate never 0).
+TopologyDraw random_config(const MechanismScene& topology, const Layout& layout, std::uint64_t seed, int index, int range) {
   SplitMix64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index) * 0xBF58476D1CE4E5B9ull + 0x51ull);
-  Config c;
-  for (int g = 0; g < layout.groups(); ++g) c.positions.push_back({Rational(rng.uniform(-range, range)), Rational(rng.uniform(-range, range))});
+  TopologyDraw c;
+  c.positions.reserve(static_cast<size_t>(layout.groups()));
+  for (int g = 0; g < layout.groups(); ++g) {
+    const long x = rng.uniform(-range, range);
+    c.positions.push_back({{x, 1}, {rng.uniform(-range, range), 1}});
+  }
+  c.axes.reserve(topology.linkage.joints().size());
   for (const LinkageJoint& j : topology.linkage.joints()) {
-    Vec2<Rational> u = kUnitDirections[rng.uniform(0, 3)];
-    if (rng.uniform(0, 1)) u = {u.y, u.x};
-    for (long turn = rng.uniform(0, 3); turn > 0; --turn) u = perp(u);
-    c.axes.push_back(j.type == JointType::Prismatic ? u : Vec2<Rational>{0, 0});
+    Vec2<SmallFraction> u = kUnitDirections[rng.uniform(0, 3)];
+    if (rng.uniform(0, 1)) std::swap(u.x, u.y);
+    for (long turn = rng.uniform(0, 3); turn > 0; --turn) u = {{-u.y.p, u.y.d}, u.x};  // +90 degrees
+    c.axes.push_back(j.type == JointType::Prismatic ? u : Vec2<SmallFraction>{});
   }
   for (size_t k = 0; k < topology.inputs.size(); ++k) {
     c.rate.push_back(random_rate(rng, true));
@@ -121,9 +127,9 @@ Verdict floating_verdict(const MechanismDataClaim& claim, const MechanismFrameOf
 // claim's time added to `seconds`; nullopt where s is singular in T. A floating failure is
 // confirmed exactly: the bounds are rigorous, so the exact sides must differ, and the
 // counterexample that is shrunk and written is an exact one.
-template <class T>
+template <class T, class NameOf>
 std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene& topology, const Layout& layout,
-                                                           const Config& config, const std::string& name,
+                                                           const TopologyDraw& config, const NameOf& name_of,
                                                            const std::vector<MechanismDataClaim>& claims,
                                                            const std::vector<bool>& done,
                                                            std::vector<SampleResult>& results,
@@ -138,7 +144,8 @@ std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene&
   try {
     solution = solve_mechanism<T>(
         g, topology.inputs, rigid_body_constraint_matrix<T>(g, geo),
-        [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, geo); }, name,
+        [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, geo); },
+        topology.source,  // its errors only say "singular here" (nullopt): no name is made for them
         &values.inputs, geo);
   } catch (const InputError&) {
     return std::nullopt;
@@ -159,7 +166,7 @@ std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene&
     } else {
       out[k] = floating_verdict(claims[k], frame, r);
       if (out[k] == Verdict::Fails) {
-        if (!s) s = build_scene(topology, layout, config, name);
+        if (!s) s = build_scene(topology, layout, config.exact(), name_of());
         if (!exact) exact = solve(*s);
         LINKPROOF_ASSERT(exact.has_value(), "a floating failure on a configuration that is singular exactly");
         const MechanismFrame exact_frame(*s, exact->motion);
@@ -268,7 +275,7 @@ TopologyConfigurations::TopologyConfigurations(const MechanismScene& scene, cons
     : scene_(scene), claims_(claims), options_(options), layout_(topology_layout(scene)) {}
 
 TopologyValues TopologyConfigurations::values(int index) const {
-  return random_config(scene_, layout_, options_.seed, index, options_.coordinate_range);
+  return random_config(scene_, layout_, options_.seed, index, options_.coordinate_range).exact();
 }
 
 std::string TopologyConfigurations::name(int index) const { return fmt::format("{}-sample-{}", scene_.name, index); }
@@ -276,10 +283,10 @@ std::string TopologyConfigurations::name(int index) const { return fmt::format("
 std::optional<std::vector<Verdict>> TopologyConfigurations::judge(int index, const std::vector<bool>& skip,
                                                                   std::vector<SampleResult>& notes,
                                                                   std::vector<double>& seconds) const {
-  const Config config = values(index);
-  const std::string config_name = name(index);
+  const TopologyDraw config = random_config(scene_, layout_, options_.seed, index, options_.coordinate_range);
+  const auto name_of = [&] { return name(index); };
   return with_scalar_type(options_.arithmetic, [&]<class T>() {
-    return configuration_verdicts<T>(scene_, layout_, config, config_name, claims_, skip, notes, seconds);
+    return configuration_verdicts<T>(scene_, layout_, config, name_of, claims_, skip, notes, seconds);
   });
 }
 

@@ -17,6 +17,16 @@ TopologyLayout topology_layout(const MechanismScene& s) {
   return out;
 }
 
+TopologyValues TopologyDraw::exact() const {
+  TopologyValues out;
+  const auto vec = [](const Vec2<SmallFraction>& v) { return Vec2<Rational>{v.x.exact(), v.y.exact()}; };
+  for (const auto& v : positions) out.positions.push_back(vec(v));
+  for (const auto& v : axes) out.axes.push_back(vec(v));
+  for (const SmallFraction& f : rate) out.rate.push_back(f.exact());
+  for (const SmallFraction& f : rate_dot) out.rate_dot.push_back(f.exact());
+  return out;
+}
+
 MechanismScene topology_configuration(const MechanismScene& topology, const TopologyLayout& layout,
                                       const TopologyValues& c, const std::string& name) {
   MechanismScene s;

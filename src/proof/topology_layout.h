@@ -31,6 +31,20 @@ struct TopologyValues {
   std::vector<Rational> rate, rate_dot;   ///< per input
 };
 
+/// A small fraction p/d (d > 0), as random configurations draw their values: converted to any
+/// scalar type without exact arithmetic where the type allows (from_fraction, core/scalar.h).
+struct SmallFraction {
+  long p = 0, d = 1;
+  Rational exact() const { return Rational(p) / Rational(d); }
+};
+
+/// The values of one drawn configuration as small fractions, in the layout's order.
+struct TopologyDraw {
+  std::vector<Vec2<SmallFraction>> positions, axes;
+  std::vector<SmallFraction> rate, rate_dot;
+  TopologyValues exact() const;
+};
+
 /// The scene of `topology` at these values, named `name` (source `name`.yaml).
 MechanismScene topology_configuration(const MechanismScene& topology, const TopologyLayout& layout,
                                       const TopologyValues& values, const std::string& name);
@@ -46,18 +60,23 @@ struct TopologyValuesIn {
 
 template <class T>
 TopologyValuesIn<T> topology_values_in(const MechanismScene& topology, const TopologyLayout& layout,
-                                       const TopologyValues& c) {
+                                       const TopologyDraw& c) {
+  const auto in_t = [](const SmallFraction& f) { return from_fraction<T>(f.p, f.d); };
+  const auto vec_in_t = [&](const Vec2<SmallFraction>& v) { return Vec2<T>{in_t(v.x), in_t(v.y)}; };
   std::vector<Vec2<T>> groups;
-  for (const Vec2<Rational>& p : c.positions) groups.push_back(vec_from_rational<T>(p));
+  groups.reserve(c.positions.size());
+  for (const Vec2<SmallFraction>& p : c.positions) groups.push_back(vec_in_t(p));
   TopologyValuesIn<T> out;
+  out.joint_at.reserve(layout.joint_group.size());
+  out.axis.reserve(layout.joint_group.size());
   for (size_t j = 0; j < layout.joint_group.size(); ++j) {
     out.joint_at.push_back(groups[static_cast<size_t>(layout.joint_group[j])]);
     out.axis.push_back(topology.linkage.joint(static_cast<int>(j)).type == JointType::Prismatic
-                           ? vec_from_rational<T>(c.axes[j])
+                           ? vec_in_t(c.axes[j])
                            : Vec2<T>{from_int<T>(0), from_int<T>(0)});
   }
   for (const int g : layout.point_group) out.point_at.push_back(groups[static_cast<size_t>(g)]);
-  for (size_t k = 0; k < c.rate.size(); ++k) out.inputs.push_back({from_rational<T>(c.rate[k]), from_rational<T>(c.rate_dot[k])});
+  for (size_t k = 0; k < c.rate.size(); ++k) out.inputs.push_back({in_t(c.rate[k]), in_t(c.rate_dot[k])});
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "claims/polygon_context.h"
 #include "core/multiprecision.h"
 #include "core/scalar.h"
+#include "check/arithmetic_types.h"
 #include "check/random_polygon.h"
 #include "geometry/closed_forms.h"
 #include "linkproof/io/scene.h"
@@ -276,6 +277,34 @@ TEST(TrackedFromRational, SmallFractionsGetTheCorrectlyRoundedMidpointAndTheExac
       ASSERT_LE(t.e, next_up(next_up(round_rational<double>(err)))) << p << "/" << d;
     }
   }
+}
+
+
+// from_fraction(p, d) is the value from_rational(p/d) gives, radius included, in every
+// arithmetic: for fractions not in lowest terms, integers, and numerators beyond 2^53 (where
+// Tracked<double> leaves its fast path).
+TEST(FromFraction, GivesWhatFromRationalGivesInEveryArithmetic) {
+  const unsigned seed = 71;
+  std::mt19937_64 g(seed);
+  std::vector<std::pair<long, long>> cases{{0, 1}, {0, 7}, {6, 4}, {-2, 6}, {1, 3}, {9, 1}, {-9, 4}, {(1L << 53) + 1, 3},
+                                           {-(1L << 60), 7}, {5, 1L << 54}};
+  for (int i = 0; i < 2000; ++i) {
+    const long p = static_cast<long>(g() % 2000001) - 1000000, d = 1 + static_cast<long>(g() % 1000);
+    cases.emplace_back(p, i % 5 == 0 ? 1 : d);
+  }
+  const auto same = []<class T>(const T& a, const T& b) {
+    if constexpr (requires { a.e; }) return to_exact(a) == to_exact(b) && a.e == b.e;
+    else return to_exact(a) == to_exact(b);
+  };
+  std::apply([&]<class... T>(T...) {
+    (
+        [&] {
+          for (const auto& [p, d] : cases)
+            ASSERT_TRUE(same(from_fraction<T>(p, d), from_rational<T>(Rational(p) / Rational(d))))
+                << ScalarTraits<T>::name << " " << p << "/" << d << ", seed " << seed;
+        }(),
+        ...);
+  }, ArithmeticScalarTypes{});
 }
 
 }  // namespace
