@@ -19,9 +19,8 @@ std::vector<long> shard_case_numbers(long size, const Shard& shard) {
   return cases;
 }
 
-BatchRun run_batch(BatchJob& job, const BatchRunOptions& o) {
+BatchRun run_batch(BatchJob& job, const BatchRunOptions& o, const std::vector<long>& cases) {
   BatchRun result;
-  const std::vector<long>& cases = o.cases;
 
   // Read back what an earlier run completed, then append.
   std::unique_ptr<ResultFile> file;

@@ -16,10 +16,11 @@
 
 namespace linkproof {
 
+/// How a batch job is run, whatever its cases are: the options every sweep (polygons, a
+/// topology) takes, extended by each sweep's own (batch/batch_sweep.h, batch/topology_sweep_job.h).
 struct BatchRunOptions {
-  std::vector<long> cases;           ///< the cases of this shard, in case order
-  Shard shard;                       ///< written into the summary line
   int jobs = 1;                      ///< worker processes; 1 runs in this process
+  Shard shard;                       ///< run only this shard's cases; written into the summary line
   std::string out;                   ///< result file (JSON Lines); empty: none
   bool resume = false;               ///< continue `out` from its last complete case
   std::ostream* progress = nullptr;  ///< progress bar target (a terminal), or null
@@ -39,7 +40,8 @@ struct BatchRun {
 /// line after the summary, more cases than the shard has, or a summary line that does not match
 /// the cases above it; ResultFileExists for a non-empty `out` without `resume`; std::bad_alloc
 /// when an allocation fails in this process or in a worker.
-BatchRun run_batch(BatchJob& job, const BatchRunOptions& options);
+/// `cases`: those of options.shard, in case order.
+BatchRun run_batch(BatchJob& job, const BatchRunOptions& options, const std::vector<long>& cases);
 
 /// The cases k of `shard` among 0..size-1 (k mod N = K - 1), in case order.
 std::vector<long> shard_case_numbers(long size, const Shard& shard);

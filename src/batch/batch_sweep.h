@@ -21,14 +21,9 @@
 
 namespace linkproof {
 
-struct BatchSweepOptions {
+struct BatchSweepOptions : BatchRunOptions {
   SweepOptions sweep;
-  int jobs = 1;               ///< worker processes; 1 runs in this process
-  Shard shard;                ///< run only this shard's cases
-  std::string out;            ///< result file (JSON Lines); empty: none
-  bool resume = false;        ///< continue `out` from its last complete case
   std::string scenes_dir;     ///< write each case with an unexpected outcome here as a scene
-  std::ostream* progress = nullptr;  ///< progress bar target (a terminal), or null
   /// The exit status the result file's summary line records (report/sweep_lines.h): required
   /// with `out`.
   SweepExitStatus exit_status;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "batch/merge.h"
+#include "batch/scene_directory.h"
 #include "report/topology_sweep_report.h"
 
 namespace linkproof {
@@ -77,17 +78,14 @@ std::string TopologySweepJob::summary_line(const Shard& shard) const {
 TopologyBatchResult run_topology_sweep(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
                                        const TopologyBatchOptions& o) {
   const auto start = std::chrono::steady_clock::now();
+  // Before the run: a directory that cannot be made fails now, not after the last case.
+  if (!o.scenes_dir.empty()) create_scene_directory(o.scenes_dir);
   TopologySweepJob job(scene, claims, o.id, o.status);
-  BatchRunOptions run;
-  run.cases = shard_case_numbers(o.id.count, o.shard);
-  run.shard = o.shard;
-  run.jobs = o.jobs;
-  run.out = o.out;
-  run.resume = o.resume;
-  run.progress = o.progress;
   TopologyBatchResult result;
-  static_cast<BatchRun&>(result) = run_batch(job, run);
+  static_cast<BatchRun&>(result) = run_batch(job, o, shard_case_numbers(o.id.count, o.shard));
   result.report = job.report();
+  if (result.status == BatchRun::Status::Complete && !o.scenes_dir.empty())
+    write_counterexample_scenes(o.scenes_dir, result.report);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -100,8 +98,10 @@ bool is_topology_summary_line(const std::string& line) {
 
 TopologyBatchResult merge_topology_files(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
                                          TopologySweepIdentity& id, const std::vector<std::string>& files,
-                                         const std::string& out, const TopologySweepStatus& status) {
+                                         const std::string& out, const std::string& scenes_dir,
+                                         const TopologySweepStatus& status) {
   const auto start = std::chrono::steady_clock::now();
+  if (!scenes_dir.empty()) create_scene_directory(scenes_dir);
   std::vector<std::string> claim_ids;
   for (const MechanismDataClaim& c : claims) claim_ids.push_back(c.info.id);
   bool first = true;
@@ -146,6 +146,7 @@ TopologyBatchResult merge_topology_files(const MechanismScene& scene, const std:
   merge_batch_files(job, id.count, ordered, out);
   TopologyBatchResult result;
   result.report = job.report();
+  if (!scenes_dir.empty()) write_counterexample_scenes(scenes_dir, result.report);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

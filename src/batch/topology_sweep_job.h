@@ -58,14 +58,12 @@ class TopologySweepJob final : public BatchJob {
 };
 
 /// `linkproof sweep --topology`: the sweep `id` of `claims` on `scene`, as a batch job.
-struct TopologyBatchOptions {
+struct TopologyBatchOptions : BatchRunOptions {
   TopologySweepIdentity id;
-  int jobs = 1;
-  Shard shard;
-  std::string out;
-  bool resume = false;
-  std::ostream* progress = nullptr;
   TopologySweepStatus status;  ///< required
+  /// A complete run writes the shrunk counterexample of each disproved claim here as a scene
+  /// (batch/scene_directory.h); empty: none.
+  std::string scenes_dir;
 };
 
 struct TopologyBatchResult : BatchRun {
@@ -73,7 +71,8 @@ struct TopologyBatchResult : BatchRun {
   double seconds = 0;  ///< of this run
 };
 
-/// Runs (or continues) the sweep: errors as run_batch's (batch/batch_run.h).
+/// Runs (or continues) the sweep: errors as run_batch's (batch/batch_run.h), and InputError
+/// (field "scene directory") for a scenes_dir that cannot be created or written.
 TopologyBatchResult run_topology_sweep(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
                                        const TopologyBatchOptions& options);
 
@@ -81,10 +80,12 @@ TopologyBatchResult run_topology_sweep(const MechanismScene& scene, const std::v
 /// sweep of `claims` on `scene` (in any order) merged into `out` (the file one run writes);
 /// InputError naming the file for a file of another scene or claim file (`id` gives their
 /// digests and names), or as merge_batch_lines. The sweep's seed, count and arithmetic are the
-/// shards'; `id` returns the merged sweep's identity.
+/// shards'; `id` returns the merged sweep's identity. The whole sweep's counterexamples are
+/// written to `scenes_dir` as run_topology_sweep writes them (empty: none).
 TopologyBatchResult merge_topology_files(const MechanismScene& scene, const std::vector<MechanismDataClaim>& claims,
                                          TopologySweepIdentity& id, const std::vector<std::string>& files,
-                                         const std::string& out, const TopologySweepStatus& status);
+                                         const std::string& out, const std::string& scenes_dir,
+                                         const TopologySweepStatus& status);
 
 /// True if `line` (the last line of a result file) is the summary of a topology sweep: how
 /// `merge` tells a topology file from a polygon one.

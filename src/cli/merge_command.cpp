@@ -1,5 +1,6 @@
 // linkproof merge --out FILE SHARD_FILE... [--scenes DIR] [--json]
-// linkproof merge --topology SCENE --claims CLAIMS --out FILE SHARD_FILE... [--json]   (shards of sweep --topology)
+// linkproof merge --topology SCENE --claims CLAIMS --out FILE SHARD_FILE... [--scenes DIR] [--json]
+//   (shards of sweep --topology)
 #include <fstream>
 
 #include "command.h"
@@ -31,23 +32,12 @@ int run_topology_merge(const MergeArgs& a, std::ostream& out) {
     throw InputError("<command line>", a.topology.empty() ? "--topology" : "--claims",
                      "the shards are of a sweep of a topology: give the scene (--topology SCENE) and the claim file "
                      "(--claims CLAIMS) it was run with");
-  if (!a.scenes.empty())
-    throw InputError("<command line>", "--scenes", "writes polygon cases; not with a sweep of a topology");
-  const MechanismScene scene = load_mechanism_scene(a.topology);
-  const std::vector<MechanismDataClaim> claims = mechanism_claims_for(a.claims, scene, a.topology);
-  TopologySweepIdentity id;
-  id.topology = scene.name;
-  id.scene_digest = file_digest(a.topology, "--topology");
-  id.claims_digest = file_digest(a.claims, "--claims");
+  TopologySweepInput in = load_topology_sweep(a.topology, a.claims);
   const TopologySweepStatus status = topology_sweep_status;
-  const TopologyBatchResult r =
-      naming_options(kSweepOptionNames, [&] { return merge_topology_files(scene, claims, id, a.files, a.out, status); });
-  const ClaimsStatus decided = topology_sweep_status(r.report);
-  if (a.json)
-    out << json_text(to_json(r.report, id, Shard{}, decided, r.seconds)) << "\n";
-  else
-    write_text(out, r.report, id, Shard{}, decided, r.seconds);
-  return decided.exit_status;
+  const TopologyBatchResult r = naming_options(kSweepOptionNames, [&] {
+    return merge_topology_files(in.scene, in.claims, in.id, a.files, a.out, a.scenes, status);
+  });
+  return print_topology_sweep_report(out, r.report, in.id, Shard{}, r.seconds, a.json);
 }
 
 // True if the first shard file ends with the summary of a sweep of a topology.
@@ -77,7 +67,9 @@ void add_merge_command(CLI::App& app, Action& action) {
   auto& a = bind_action<MergeArgs>(s, action, run_merge_command);
   s->add_option("files", a.files, "the result files of shards 1..N, in any order")->required();
   s->add_option("--out", a.out, "the merged result file: the bytes a single run writes (must not exist)")->required();
-  s->add_option("--scenes", a.scenes, "write every case with an unexpected outcome to DIR as a scene");
+  s->add_option("--scenes", a.scenes,
+                "write every case with an unexpected outcome to DIR as a scene (with --topology: the shrunk "
+                "counterexample of each disproved claim)");
   s->add_option("--topology", a.topology, "shards of a sweep of a topology: the scene it was run on (sweep --topology)");
   s->add_option("--claims", a.claims, "shards of a sweep of a topology: the claim file it was run with (sweep --claims)");
   s->add_flag("--json", a.json, "print JSON");

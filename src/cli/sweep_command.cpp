@@ -1,7 +1,7 @@
 // linkproof sweep --n 4..12 --count N --seed S [--arith ...] [--index I] [--json]
 //                 [--jobs N] [--out FILE [--resume]] [--shard K/N] [--scenes DIR]
 // linkproof sweep --topology SCENE --claims CLAIMS --count K [--seed S] [--arith A] [--json]
-//                 [--jobs N] [--out FILE [--resume]] [--shard K/N]   (topology_sweep_command.cpp)
+//                 [--jobs N] [--out FILE [--resume]] [--shard K/N] [--scenes DIR]   (topology_sweep_command.cpp)
 #include <unistd.h>
 
 #include <cstdio>
@@ -39,8 +39,18 @@ void add_sweep_options(CLI::App* s, SweepArgs& a) {
   s->add_option("--arith", a.arith,
                 "arithmetic: exact (default), double, long-double, mp30, mp50, mp100, mp1000 (see check --help)");
   s->add_option("--out", a.out, "stream every case to FILE (JSON Lines: one case per line, then a summary line)");
-  s->add_option("--scenes", a.scenes, "write every case with an unexpected outcome to DIR as a scene `check` reads");
+  s->add_option("--scenes", a.scenes,
+                "write every case with an unexpected outcome to DIR as a scene `check` reads; with --topology: the "
+                "shrunk counterexample of each disproved claim, a scene `check-claim CLAIMS --scene` re-fails");
   s->add_flag("--json", a.json, "print JSON");
+}
+
+void add_topology_options(CLI::App* s, SweepCommandArgs& a) {
+  s->get_option("--n")->each([&a](const std::string&) { a.n_given = true; });
+  s->add_option("--topology", a.topology,
+                "sweep the configurations 0..K-1 (--count K) of this mechanism scene's topology instead of polygons; "
+                "with --claims");
+  s->add_option("--claims", a.claims, "with --topology: the mechanism claim file judged on every configuration");
 }
 
 Shard parse_shard(const std::string& s) {
@@ -63,24 +73,30 @@ int report_stopped_sweep(const BatchRun& r, const std::string& out, std::ostream
   return code;
 }
 
+BatchRunOptions batch_run_options_or_throw(const SweepCommandArgs& a, std::ostream& err) {
+  BatchRunOptions o;
+  o.jobs = a.jobs.value_or(default_jobs());
+  if (o.jobs < 1 || o.jobs > 1024) throw InputError("<command line>", "--jobs", "must be between 1 and 1024");
+  if (!a.shard.empty()) o.shard = parse_shard(a.shard);
+  o.out = a.out;
+  o.resume = a.resume;
+  // The bar only on the real stderr, and only when it is a terminal.
+  if (&err == &std::cerr && ::isatty(STDERR_FILENO)) o.progress = &err;
+  return o;
+}
+
 namespace {
 
 int run_sweep_command(const SweepCommandArgs& a, std::ostream& out, std::ostream& err) {
   if (!a.topology.empty() || !a.claims.empty()) return run_topology_sweep_command(a, out, err);
   BatchSweepOptions b;
   b.sweep = sweep_options_or_throw(a);
-  b.jobs = a.jobs.value_or(default_jobs());
-  if (b.jobs < 1 || b.jobs > 1024) throw InputError("<command line>", "--jobs", "must be between 1 and 1024");
-  if (!a.shard.empty()) b.shard = parse_shard(a.shard);
-  b.out = a.out;
-  b.resume = a.resume;
+  static_cast<BatchRunOptions&>(b) = batch_run_options_or_throw(a, err);
   b.scenes_dir = a.scenes;
   b.exit_status = [](const SweepReport& s) { return exit_status(s); };
   if (a.resume && a.out.empty()) throw InputError("<command line>", "--resume", "needs --out FILE (the file to continue)");
   if (a.index && (!a.out.empty() || !a.shard.empty()))
     throw InputError("<command line>", "--index", "replays one case; it cannot be combined with --out or --shard");
-  // The bar only on the real stderr, and only when it is a terminal.
-  if (&err == &std::cerr && ::isatty(STDERR_FILENO)) b.progress = &err;
   const BatchSweepResult r = naming_sweep_options([&] { return run_batch_sweep(dijksman1966::catalogue(), b); });
   if (r.status != BatchSweepResult::Status::Complete) return report_stopped_sweep(r, a.out, err, exit_status(r));
   return print_report(out, r.report, a.json, exit_status(r));
@@ -94,11 +110,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
                                "random configurations of a topology");
   auto& a = bind_action<SweepCommandArgs>(s, action, run_sweep_command);
   add_sweep_options(s, a);
-  s->get_option("--n")->each([&a](const std::string&) { a.n_given = true; });
-  s->add_option("--topology", a.topology,
-                "sweep the configurations 0..K-1 (--count K) of this mechanism scene's topology instead of polygons; "
-                "with --claims");
-  s->add_option("--claims", a.claims, "with --topology: the mechanism claim file judged on every configuration");
+  add_topology_options(s, a);
   s->add_option("--index", a.index, "replay only this case index");
   s->add_option("--jobs", a.jobs, "worker processes (default: every core); the output does not depend on it");
   s->add_flag("--resume", a.resume, "continue --out FILE from its last complete case (after a kill or a crash)");

@@ -9,13 +9,8 @@
 #include "exit_status.h"
 #include "report/json_report.h"
 
-namespace linkproof {
+namespace linkproof::test {
 namespace {
-
-using test::fresh_dir;
-using test::read_file;
-using test::run_cli;
-using test::without_seconds;
 
 // 5 values of n x 10 cases: long enough to be killed mid-run, short enough for the unit suite.
 const std::vector<std::string> kSweep = {"sweep", "--n", "4..8", "--count", "10", "--seed", "11"};
@@ -26,17 +21,9 @@ std::vector<std::string> sweep_args(std::vector<std::string> extra) {
   return a;
 }
 
-/// The reference: one plain single-process run (result file and JSON report), computed once.
-struct Reference {
-  std::string file, json;
-};
+/// The reference: one plain single-process run, computed once.
 const Reference& reference() {
-  static const Reference r = [] {
-    const std::string dir = fresh_dir("sweep_reference");
-    const auto run = run_cli(sweep_args({"--jobs", "1", "--out", dir + "/ref.jsonl", "--json"}));
-    EXPECT_EQ(run.code, 0) << run.err;
-    return Reference{read_file(dir + "/ref.jsonl"), without_seconds(run.out)};
-  }();
+  static const Reference r = reference_run("sweep_reference", sweep_args({"--jobs", "1"}));
   return r;
 }
 
@@ -246,4 +233,4 @@ TEST(BatchSweep, ProgressIsSilentWhenStderrIsNotATerminal) {
 }
 
 }  // namespace
-}  // namespace linkproof
+}  // namespace linkproof::test

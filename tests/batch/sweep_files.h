@@ -49,6 +49,20 @@ inline std::string without_seconds(const std::string& json_text) {
   return j.dump(2);
 }
 
+/// A plain single-process run: its result file and its JSON report without the run time, what
+/// the other runs of a test must give.
+struct Reference {
+  std::string file, json;
+};
+/// Runs the sweep `args` with "--out DIR/ref.jsonl --json" (DIR a fresh directory `name`).
+inline Reference reference_run(const std::string& name, std::vector<std::string> args) {
+  const std::string dir = fresh_dir(name);
+  args.insert(args.end(), {"--out", dir + "/ref.jsonl", "--json"});
+  const auto run = run_cli(args);
+  EXPECT_EQ(run.code, 0) << run.err;
+  return Reference{read_file(dir + "/ref.jsonl"), without_seconds(run.out)};
+}
+
 /// The CLI in a forked child (its output discarded); returns the child's pid.
 inline pid_t spawn_cli(const std::vector<std::string>& args) {
   const pid_t pid = ::fork();

@@ -13,13 +13,8 @@
 #include "exit_status.h"
 #include "report/json_report.h"
 
-namespace linkproof {
+namespace linkproof::test {
 namespace {
-
-using test::fresh_dir;
-using test::read_file;
-using test::run_cli;
-using test::without_seconds;
 
 /// The catalogue with one erratum reading marked as expected to hold: a catalogue that fails,
 /// so the sweep has unexpected outcomes to keep, write as scenes and merge.
@@ -188,4 +183,4 @@ TEST(ProgressBar, ShowsCasesRateEtaAndFailures) {
 }
 
 }  // namespace
-}  // namespace linkproof
+}  // namespace linkproof::test

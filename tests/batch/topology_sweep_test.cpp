@@ -4,18 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "batch/sweep_files.h"
 #include "support/counterexample_replay.h"
 
-namespace linkproof {
+namespace linkproof::test {
 namespace {
-
-using test::fresh_dir;
-using test::read_file;
-using test::run_cli;
-using test::without_seconds;
 
 std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
@@ -32,17 +29,9 @@ std::vector<std::string> sweep_of(const std::string& count, const std::string& s
 }
 std::vector<std::string> sweep_args(std::vector<std::string> extra) { return sweep_of("60", "3", std::move(extra)); }
 
-/// The reference: one plain single-process run (result file and JSON report), computed once.
-struct Reference {
-  std::string file, json;
-};
+/// The reference: one plain single-process run, computed once.
 const Reference& reference() {
-  static const Reference r = [] {
-    const std::string dir = fresh_dir("topology_sweep_reference");
-    const auto run = run_cli(sweep_args({"--jobs", "1", "--out", dir + "/ref.jsonl", "--json"}));
-    EXPECT_EQ(run.code, 0) << run.err;
-    return Reference{read_file(dir + "/ref.jsonl"), without_seconds(run.out)};
-  }();
+  static const Reference r = reference_run("topology_sweep_reference", sweep_args({"--jobs", "1"}));
   return r;
 }
 
@@ -170,6 +159,57 @@ TEST(SweepTopology, AWrongClaimIsDisprovedWithTheSameShrunkSceneAsCheckClaim) {
   EXPECT_EQ(disproved, 3);
 }
 
+/// The scene files in `dir`, by file name, with their text.
+std::map<std::string, std::string> scene_files(const std::string& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    files[entry.path().filename().string()] = read_file(entry.path().string());
+  return files;
+}
+
+TEST(SweepTopology, ScenesWritesEachDisprovedClaimsCounterexampleAsASceneCheckClaimRefails) {
+  const std::string dir = fresh_dir("topology_sweep_scenes");
+  const auto run = run_cli(sweep_args({"--jobs", "2", "--scenes", dir + "/scenes", "--json"}));
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(without_seconds(run.out), reference().json) << "--scenes changes nothing in the report";
+  const auto files = scene_files(dir + "/scenes");
+  const auto report = nlohmann::json::parse(reference().json);
+  size_t disproved = 0;
+  for (const auto& c : report["claims"]) {
+    if (c["verdict"] != "disproved") continue;
+    ++disproved;
+    const std::string id = c["id"];
+    const std::string name = "counterexample-" + id + ".yaml";
+    ASSERT_EQ(files.count(name), 1u) << name;
+    EXPECT_EQ(files.at(name), c["counterexample"]["scene_yaml"].get<std::string>()) << name;
+    const auto replay = run_cli({"check-claim", kFourbarClaims, "--scene", dir + "/scenes/" + name, "--json"});
+    const auto replayed = nlohmann::json::parse(replay.out);
+    bool refailed = false;
+    for (const auto& rc : replayed["claims"])
+      if (rc["id"] == id) refailed = rc["verdict"] == "fails";
+    EXPECT_TRUE(refailed) << name << ":\n" << replay.out;
+  }
+  EXPECT_EQ(disproved, 3u);
+  EXPECT_EQ(files.size(), disproved) << "one scene a disproved claim, and nothing else";
+}
+
+TEST(SweepTopology, MergeScenesWritesTheScenesOfTheWholeRun) {
+  const std::string dir = fresh_dir("topology_sweep_merge_scenes");
+  ASSERT_EQ(run_cli(sweep_args({"--jobs", "1", "--scenes", dir + "/whole"})).code, 0);
+  std::vector<std::string> merge = {"merge", "--topology", kFourbar, "--claims", kFourbarClaims, "--out",
+                                    dir + "/merged.jsonl", "--scenes", dir + "/merged"};
+  for (const char* shard : {"1/2", "2/2"}) {
+    const std::string f = dir + "/s" + std::string(1, shard[0]) + ".jsonl";
+    ASSERT_EQ(run_cli(sweep_args({"--jobs", "1", "--shard", shard, "--out", f})).code, 0) << shard;
+    merge.push_back(f);
+  }
+  const auto merged = run_cli(merge);
+  ASSERT_EQ(merged.code, 0) << merged.err;
+  EXPECT_EQ(read_file(dir + "/merged.jsonl"), reference().file);
+  EXPECT_EQ(scene_files(dir + "/merged"), scene_files(dir + "/whole"));
+  EXPECT_FALSE(scene_files(dir + "/whole").empty());
+}
+
 TEST(SweepTopology, TrueFourBarClaimsHoldOnSamplesInDoubleAndExact) {
   for (const std::string arith : {"exact", "double"}) {
     const auto run = run_cli(sweep_args({"--arith", arith, "--jobs", "1", "--json"}));
@@ -229,7 +269,7 @@ TEST(SweepTopology, BadOptionsNameTheOption) {
       {sweep_args({"--arith", "quad"}), "--arith"},
       {sweep_of("0", "3", {}), "--count"},
       {sweep_args({"--index", "2"}), "--index"},
-      {sweep_args({"--scenes", "somewhere"}), "--scenes"},
+      {sweep_args({"--scenes", kFourbar + "/scenes"}), "--scenes"},  // under a regular file: cannot be made
       {sweep_args({"--shard", "4/3"}), "--shard"},
       {sweep_args({"--jobs", "0"}), "--jobs"},
       {sweep_args({"--resume"}), "--resume"},
@@ -246,4 +286,4 @@ TEST(SweepTopology, BadOptionsNameTheOption) {
 }
 
 }  // namespace
-}  // namespace linkproof
+}  // namespace linkproof::test

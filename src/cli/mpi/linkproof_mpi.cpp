@@ -1,14 +1,17 @@
 // linkproof_mpi: a sweep distributed over MPI ranks (the optional MPI component).
 //
 //   mpirun -np 64 build/linkproof_mpi --n 4..12 --count 10000 --seed 7 --out sweep.jsonl
+//   mpirun -np 64 build/linkproof_mpi --topology SCENE --claims CLAIMS --count 100000 --out sweep.jsonl
 //
 // Rank r computes shard r+1 of N = size (the cases k with k mod N = r, as `sweep --shard`),
 // trimmed to the examples its report keeps; rank 0 gathers every shard's lines and merges them
 // (batch/merge.h). The result file and the report are the bytes `linkproof sweep` gives with the
 // same options. Options: those of `sweep` that describe the cases and the output (see
-// sweep_args.h); exit codes as `sweep` (0, 1 a true claim failed, 2 bad input, 3 internal error).
+// sweep_args.h), for polygons or (--topology --claims) a mechanism topology; exit codes as
+// `sweep` (0, 1 a claim not as expected, 2 bad input, 3 internal error).
 #include <mpi.h>
 
+#include <chrono>
 #include <climits>
 #include <iostream>
 #include <sstream>
@@ -19,6 +22,8 @@
 #include "dijksman1966.h"
 #include "batch/batch_sweep.h"
 #include "batch/merge.h"
+#include "batch/scene_directory.h"
+#include "batch/topology_sweep_job.h"
 #include "check/sweep_tally.h"
 #include "exit_status.h"
 #include "report/json_report.h"
@@ -39,6 +44,19 @@ std::string shard_lines(const std::vector<Claim>& catalogue, const SweepOptions&
     lines += sweep_case_line(c, o.arithmetic) + "\n";
   }
   return lines + sweep_summary_line(tally.report(), shard, exit_status(tally.report())) + "\n";
+}
+
+/// This rank's shard of a sweep of a topology as result-file lines: the bytes of
+/// `sweep --topology ... --shard K/N --out` (cases, then the shard's summary).
+std::string topology_shard_lines(TopologySweepJob& job, long count, const Shard& shard) {
+  std::string lines;
+  long i = 0;
+  for (long k : shard_case_numbers(count, shard)) {
+    const std::string line = job.case_line(k);
+    job.take_worker_line(line, k, ++i);  // counted for the summary line
+    lines += line + "\n";
+  }
+  return lines + job.summary_line(shard) + "\n";
 }
 
 /// Gathers every rank's text on rank 0 (empty elsewhere), one string per rank.
@@ -64,16 +82,70 @@ std::vector<std::string> gather(const std::string& mine, int rank, int size) {
   return parts;
 }
 
+/// Rank 0's reader of the gathered parts: the next line of rank s's part (nullopt at its end).
+class GatheredLines {
+ public:
+  explicit GatheredLines(const std::vector<std::string>& parts) {
+    for (const auto& p : parts) in_.emplace_back(p);
+  }
+  std::optional<std::string> next(int s) {
+    std::string line;
+    if (std::getline(in_[static_cast<size_t>(s)], line)) return line;
+    return std::nullopt;
+  }
+  static std::string source(int s) { return fmt::format("<rank {}>", s); }
+
+ private:
+  std::vector<std::istringstream> in_;
+};
+
+/// `sweep --topology SCENE --claims CLAIMS` over the ranks; every rank reads both files.
+int run_topology(const SweepCommandArgs& a, int rank, int size) {
+  TopologySweepInput in;
+  try {
+    check_topology_options(a);  // the same on every rank: all fail or none does
+    const Arithmetic arithmetic = arithmetic_or_throw(a.arith);
+    in = load_topology_sweep(a.topology, a.claims);
+    in.id.seed = a.seed;
+    in.id.count = a.count;
+    in.id.arithmetic = arithmetic;
+  } catch (const InputError& e) {
+    if (rank == 0) fmt::print(std::cerr, "linkproof_mpi: bad input: {}\n", e.what());
+    return 2;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const TopologySweepStatus status = topology_sweep_status;
+  TopologySweepJob shard_job(in.scene, in.claims, in.id, status);
+  const std::vector<std::string> parts =
+      gather(topology_shard_lines(shard_job, in.id.count, Shard{rank + 1, size}), rank, size);
+  if (rank != 0) return 0;
+  GatheredLines lines(parts);
+  try {
+    TopologySweepJob job(in.scene, in.claims, in.id, status);
+    naming_options(kSweepOptionNames, [&] {
+      merge_batch_lines(job, in.id.count, size, [&](int s) { return lines.next(s); }, GatheredLines::source, a.out);
+      if (!a.scenes.empty()) write_counterexample_scenes(a.scenes, job.report());
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return print_topology_sweep_report(std::cout, job.report(), in.id, Shard{}, seconds, a.json);
+  } catch (const InputError& e) {
+    fmt::print(std::cerr, "linkproof_mpi: bad input: {}\n", e.what());
+    return 2;
+  }
+}
+
 int run(int argc, char** argv, int rank, int size) {
   CLI::App app{"linkproof_mpi: `linkproof sweep` distributed over MPI ranks"};
-  SweepArgs a;
+  SweepCommandArgs a;
   add_sweep_options(&app, a);
+  add_topology_options(&app, a);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (rank == 0) return app.exit(e) == 0 ? 0 : 2;
     return e.get_exit_code() == 0 ? 0 : 2;
   }
+  if (!a.topology.empty() || !a.claims.empty()) return run_topology(a, rank, size);
   SweepOptions o;
   try {
     o = sweep_options_or_throw(a);  // the same on every rank: all fail or none does
@@ -84,18 +156,11 @@ int run(int argc, char** argv, int rank, int size) {
   const auto catalogue = dijksman1966::catalogue();
   const std::vector<std::string> parts = gather(shard_lines(catalogue, o, Shard{rank + 1, size}), rank, size);
   if (rank != 0) return 0;
-  std::vector<std::istringstream> in;
-  for (const auto& p : parts) in.emplace_back(p);
+  GatheredLines lines(parts);
   try {
     const SweepReport r = naming_options(kSweepOptionNames, [&] {
       return merge_shard_lines(
-          catalogue, o, size,
-          [&](int s) -> std::optional<std::string> {
-            std::string line;
-            if (std::getline(in[static_cast<size_t>(s)], line)) return line;
-            return std::nullopt;
-          },
-          [](int s) { return fmt::format("<rank {}>", s); }, a.out, a.scenes,
+          catalogue, o, size, [&](int s) { return lines.next(s); }, GatheredLines::source, a.out, a.scenes,
           [](const SweepReport& s) { return exit_status(s); });
     });
     return print_report(std::cout, r, a.json, exit_status(r));
