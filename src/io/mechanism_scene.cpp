@@ -15,6 +15,7 @@
 #include "scene_ask.h"
 #include "yaml_document.h"
 #include "geometry/zero_vector.h"
+#include "mechanism/zero_length_driver.h"
 
 namespace linkproof {
 
@@ -23,27 +24,17 @@ using namespace yaml_io;
 namespace {
 
 class MechanismReader {
-  // A driven link whose joints are all revolute and at one point has zero length: its rotation
-  // moves nothing, and the check would run on an input that drives no motion.
+  // A driven link of zero length (mechanism/zero_length_driver.h) drives no motion.
   void refuse_zero_length_drivers(const MechanismScene& scene) const {
     const Linkage& g = scene.linkage;
-    for (std::size_t i = 0; i < scene.inputs.size(); ++i) {
-      const MechanismInput& in = scene.inputs[i];
-      if (in.kind != MechanismInput::Kind::Link) continue;
-      std::vector<const LinkageJoint*> on_link;
-      for (int j = 0; j < g.joint_count(); ++j)
-        if (g.joint(j).links[0] == in.index || g.joint(j).links[1] == in.index) on_link.push_back(&g.joint(j));
-      if (on_link.size() < 2) continue;
-      const bool all_revolute_at_one_point = std::all_of(on_link.begin(), on_link.end(), [&](const LinkageJoint* j) {
-        return j->type == JointType::Revolute && j->at.x == on_link.front()->at.x && j->at.y == on_link.front()->at.y;
-      });
-      if (all_revolute_at_one_point)
-        fail(fmt::format("mechanism.inputs[{}].link", i),
-             fmt::format("the driven link {} has zero length: its joints {} and {} are both at ({}, {}); a driven link "
-                         "needs two joints at different points",
-                         backticked(g.link_name(in.index)), backticked(on_link[0]->name), backticked(on_link[1]->name),
-                         format_rational(on_link[0]->at.x), format_rational(on_link[0]->at.y)));
-    }
+    std::vector<Vec2<Rational>> at;
+    for (const LinkageJoint& j : g.joints()) at.push_back(j.at);
+    if (const auto z = zero_length_driver(g, scene.inputs, at))
+      fail(fmt::format("mechanism.inputs[{}].link", z->input),
+           fmt::format("the driven link {} has zero length: its joints {} and {} are both at ({}, {}); a driven link "
+                       "needs two joints at different points",
+                       backticked(g.link_name(scene.inputs[z->input].index)), backticked(g.joint(z->first).name),
+                       backticked(g.joint(z->second).name), format_rational(z->at.x), format_rational(z->at.y)));
   }
 
  public:

@@ -11,6 +11,7 @@
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
 #include "mechanism/mechanism_vector_route.h"
+#include "mechanism/zero_length_driver.h"
 
 namespace linkproof {
 
@@ -85,15 +86,16 @@ Verdict quick_verdict(const MechanismDataClaim& claim, const MechanismFrame& fra
   return v;
 }
 
-// True if the scene reader accepts the configuration as written: it refuses some configurations
-// the solver accepts (a driven link whose two joints coincide), and a counterexample must replay.
-bool is_readable(const MechanismScene& s) {
-  try {
-    parse_mechanism_scene(mechanism_scene_to_yaml(s), s.source);
-    return true;
-  } catch (const InputError&) {
-    return false;
-  }
+// True if the scene reader accepts a configuration of the topology as written, a counterexample
+// must replay. Of what the reader checks, only a driven link of zero length depends on the
+// positions, and it is tested here on the values (a YAML round trip per failing configuration
+// was most of a sweep with wrong claims); TopologyConfigurations.ReplayableIsWhatTheSceneReaderAccepts
+// compares the two on every bundled topology, and each written counterexample is read back.
+bool is_readable(const MechanismScene& topology, const Layout& layout, const Config& c) {
+  std::vector<Vec2<Rational>> at;
+  at.reserve(layout.joint_group.size());
+  for (const int g : layout.joint_group) at.push_back(c.positions[static_cast<size_t>(g)]);
+  return !zero_length_driver(topology.linkage, topology.inputs, at).has_value();
 }
 
 // The verdict of one claim on a configuration solved in a floating arithmetic T (Tracked<F>):
@@ -179,11 +181,14 @@ std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene&
   return out;
 }
 
-bool still_fails(const MechanismDataClaim& claim, const MechanismScene& s) {
+bool still_fails(const MechanismDataClaim& claim, const MechanismScene& topology, const Layout& layout, const Config& c,
+                 const std::string& name) {
+  if (!is_readable(topology, layout, c)) return false;
+  const MechanismScene s = build_scene(topology, layout, c, name);
   const auto solution = solve(s);
   if (!solution) return false;
   const MechanismFrame frame(s, solution->motion);
-  return quick_verdict(claim, frame, nullptr, nullptr) == Verdict::Fails && is_readable(s);
+  return quick_verdict(claim, frame, nullptr, nullptr) == Verdict::Fails;
 }
 
 // Size of a rational for shrinking: |numerator| + denominator.
@@ -221,7 +226,7 @@ MechanismCounterexample shrink_failure(const MechanismDataClaim& claim, const Me
   const auto accept = [&](Config candidate) {
     if (cx.shrink_tried >= o.shrink_budget) return false;
     ++cx.shrink_tried;
-    if (!still_fails(claim, build_scene(topology, layout, candidate, name))) return false;
+    if (!still_fails(claim, topology, layout, candidate, name)) return false;
     c = std::move(candidate);
     ++cx.shrink_steps;
     return true;
@@ -261,6 +266,11 @@ MechanismCounterexample shrink_failure(const MechanismDataClaim& claim, const Me
   cx.scene = build_scene(topology, layout, c, name);
   cx.scene.source = "counterexample";
   cx.scene_yaml = mechanism_scene_to_yaml(cx.scene);
+  try {  // it replays: the scene reader accepts what was written
+    parse_mechanism_scene(cx.scene_yaml, "counterexample");
+  } catch (const InputError& e) {
+    LINKPROOF_ASSERT(false, std::string("a counterexample the scene reader refuses: ") + e.what());
+  }
   const auto solution = solve(cx.scene);
   LINKPROOF_ASSERT(solution.has_value(), "a shrunk counterexample that does not solve");
   const MechanismContext ctx{cx.scene, *solution};
@@ -290,9 +300,7 @@ std::optional<std::vector<Verdict>> TopologyConfigurations::judge(int index, con
   });
 }
 
-bool TopologyConfigurations::is_replayable(int index) const {
-  return is_readable(build_scene(scene_, layout_, values(index), name(index)));
-}
+bool TopologyConfigurations::is_replayable(int index) const { return is_readable(scene_, layout_, values(index)); }
 
 MechanismCounterexample TopologyConfigurations::shrink(size_t claim, int index) const {
   return shrink_failure(claims_[claim], scene_, layout_, values(index), index, options_);
