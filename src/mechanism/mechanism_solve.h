@@ -41,8 +41,6 @@ struct InputValue {
   T rate, rate_dot;
 };
 
-/// The input rows: one unit row per input, in the unknown's column; the right-hand sides are the
-/// inputs' rates, or `values[k]` when given.
 /// The inputs' rates (or, second_order, their derivatives) appended to b: the right-hand side of
 /// the input rows.
 template <class T>
@@ -56,6 +54,8 @@ void append_input_rates(const std::vector<MechanismInput>& inputs, std::vector<T
   }
 }
 
+/// The input rows: one unit row per input, in the unknown's column; the right-hand sides are the
+/// inputs' rates, or `values[k]` when given.
 template <class T>
 void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inputs, DenseMatrix<T>& A,
                        std::vector<T>& b, bool second_order, const std::string& source,
