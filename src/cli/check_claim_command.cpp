@@ -192,8 +192,7 @@ int run_check_claim(const CheckClaimArgs& a, std::ostream& out, std::ostream&) {
   std::vector<ProofResult> results;
   for (const DataClaim& c : file.claims) {
     ProveOptions o;
-    o.ladder_seconds = a.ladder_seconds.value_or(o.ladder_seconds);
-    o.recheck_proved = a.ladder_seconds.has_value() || (!a.n_range.empty() && lo != hi);
+    set_ladder(o, a.ladder_seconds, !a.n_range.empty() && lo != hi);
     o.search.seed = a.seed;
     o.search.n_min = lo;
     o.search.n_max = std::max(lo, std::min(hi, 8));

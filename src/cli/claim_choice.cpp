@@ -35,4 +35,9 @@ void check_prove_limits(const std::optional<int>& n, double ladder_seconds) {
                      fmt::format("must be between 0 and {}", kMaxClaimLadderSeconds));
 }
 
+void set_ladder(ProveOptions& o, const std::optional<double>& ladder_seconds, bool range_asked) {
+  o.ladder_seconds = ladder_seconds.value_or(o.ladder_seconds);
+  o.recheck_proved = ladder_seconds.has_value() || range_asked;
+}
+
 }  // namespace linkproof::cli

@@ -21,6 +21,10 @@
 #include "report/json_report.h"
 #include "io/claim_file.h"
 
+namespace linkproof {
+struct ProveOptions;
+}
+
 namespace linkproof::cli {
 
 /// The work of one parsed subcommand; returns the exit code.
@@ -91,6 +95,11 @@ std::vector<const DataClaim*> choose_claims(const ClaimFile& file, const std::ve
 
 /// --n within 4..kMaxClaimSides and --ladder-seconds within 0..3600, or an InputError naming it.
 void check_prove_limits(const std::optional<int>& n, double ladder_seconds);
+
+/// The per-n ladder as the command line sets it: --ladder-seconds if given, and re-checks of
+/// claims already proved for every n only when the ladder is asked for (--ladder-seconds, or
+/// `range_asked`: a range of n), where they add nothing but time otherwise.
+void set_ladder(ProveOptions& o, const std::optional<double>& ladder_seconds, bool range_asked);
 
 /// The claim file `file` read for a mechanism scene and bound to its names (a polygon claim file
 /// is refused as such).

@@ -58,9 +58,8 @@ int run_prove(const ProveArgs& a, std::ostream& out, std::ostream&) {
   check_prove_limits(a.n, a.ladder_seconds.value_or(o.ladder_seconds));
   const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   o.only_n = a.n;
-  o.ladder_seconds = a.ladder_seconds.value_or(o.ladder_seconds);
   o.n_max = a.n_max;
-  o.recheck_proved = a.ladder_seconds.has_value() || a.n_max > 0;
+  set_ladder(o, a.ladder_seconds, a.n_max > 0);
   GroundTruthEngine engine;
   std::vector<ProofResult> results;
   for (const DataClaim* c : chosen) {

@@ -99,8 +99,7 @@ int report_claim_file(const ReportArgs& a, const std::string& text, std::ostream
   check_prove_limits(a.n, a.ladder_seconds.value_or(o.ladder_seconds));
   const std::vector<const DataClaim*> chosen = choose_claims(file, a.claims);
   o.only_n = a.n;
-  o.ladder_seconds = a.ladder_seconds.value_or(o.ladder_seconds);
-  o.recheck_proved = a.ladder_seconds.has_value();
+  set_ladder(o, a.ladder_seconds, false);
   GroundTruthEngine engine;
   std::vector<ProofResult> results;
   for (const DataClaim* c : chosen)

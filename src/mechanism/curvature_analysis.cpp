@@ -150,7 +150,7 @@ CurvatureAnalysis analyse_curvature(const MechanismScene& s, const MechanismSolu
                                  "(docs/limits.md), this mechanism has {}",
                                  kMaxCurvatureLinks, g.link_count()));
   CurvatureAnalysis a;
-  const auto fields = link_fields(g, truth.motion);
+  const auto& fields = truth.motion.fields;
   for (int i = 0; i < g.link_count(); ++i)
     for (int k = i + 1; k < g.link_count(); ++k)
       a.poles.push_back({i, k, construct_pole(fields[static_cast<size_t>(i)], fields[static_cast<size_t>(k)],

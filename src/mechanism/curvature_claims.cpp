@@ -49,7 +49,7 @@ std::vector<BarView> all_bars(const Linkage& g) {
 // f(bar, field of its near link, field of its far link) for every bar seen from both ends.
 template <class F>
 void for_each_bar(const MechanismContext& c, F f) {
-  const auto fields = link_fields(c.scene.linkage, c.truth.motion);
+  const auto& fields = c.truth.motion.fields;
   for (const BarView& b : all_bars(c.scene.linkage))
     f(b, fields[static_cast<size_t>(b.moving)], fields[static_cast<size_t>(b.fixed)]);
 }
@@ -164,7 +164,7 @@ void add_curvature_claims(std::vector<MechanismClaim>& out, const std::shared_pt
       [a](const MechanismContext& c) {
         ClaimSides<Rational> s;
         const Linkage& g = c.scene.linkage;
-        const auto fields = link_fields(g, c.truth.motion);
+        const auto& fields = c.truth.motion.fields;
         for (const CentreEntry& e : a->centres) {
           const int m = e.request.moving, f = e.request.fixed;
           const std::string name = motion_name(g, m, f);

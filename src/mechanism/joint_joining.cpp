@@ -72,7 +72,7 @@ JointJoiningStep join_joints(const Linkage& g, const MechanismMotion<Rational>& 
                                                                     : "I is undefined: " + s.I.reason;
     return s;
   }
-  const auto fields = link_fields(g, motion);
+  const auto& fields = motion.fields;
   std::vector<LinkageJoint> joints = g.joints();
   for (int b = 0; b < 2; ++b) {
     const BarEnds& e = s.ends[b];

@@ -62,15 +62,25 @@ LinearSolution<T> solve_linear_system_sparse(const DenseMatrix<T>& A, const std:
 /// systems of a mechanism share their matrix, so it is eliminated once.
 ///   exact (Rational, GiNaC):  A is kept and each solve runs the sparse route (its cost is in
 ///                             the rationals, not in repeating the elimination);
-///   floating point:           A is eliminated at construction (dense Gaussian elimination with
+///   floating point:           A is eliminated at construction (Gauss-Jordan elimination with
 ///                             partial pivoting), recording each row exchange and each
 ///                             multiplier; a solve replays them on b. The pivots depend on A
 ///                             alone, so a replayed b is the same bits as eliminating [A | b].
+///                             A row operation skips the columns where the pivot row is an
+///                             exact 0 (a - f 0 = a: a mechanism's rows are mostly zeros) and
+///                             writes the exact 0 it makes in the pivot's column.
 template <class T>
 class LinearSystem {
  public:
   explicit LinearSystem(DenseMatrix<T> A) : a_(std::move(A)) {
-    if constexpr (!ScalarTraits<T>::is_exact) eliminate();
+    if constexpr (!ScalarTraits<T>::is_exact) eliminate(true);
+  }
+
+  /// The rank of A, when nothing will be solved with it: in floating point, the same pivots
+  /// with the rows below each pivot alone eliminated and nothing recorded.
+  static int rank_of(DenseMatrix<T> A) {
+    LinearSystem s(std::move(A), RankOnly{});
+    return s.rank();
   }
 
   /// The rank of A.
@@ -116,12 +126,23 @@ class LinearSystem {
   // A pivot counts as zero when |p| <= max(m, n) * u * max|A_ij| (see the file comment).
   bool negligible(const T& v) const { return std::abs(ScalarTraits<T>::to_double(v)) <= threshold_; }
 
-  void eliminate() {
+  struct RankOnly {};
+  LinearSystem(DenseMatrix<T> A, RankOnly) : a_(std::move(A)) {
+    if constexpr (!ScalarTraits<T>::is_exact) eliminate(false);
+  }
+
+  // Gauss-Jordan with each operation recorded (`solvable`), or, for the rank alone, the rows
+  // below each pivot eliminated (the pivots depend on those rows alone, so the rank is the same).
+  void eliminate(bool solvable) {
     const size_t m = a_.size(), n = columns();
     double amax = 0;
     for (const auto& row : a_)
       for (const auto& v : row) amax = std::max(amax, std::abs(ScalarTraits<T>::to_double(v)));
     threshold_ = static_cast<double>(std::max(m, n)) * std::numeric_limits<double>::epsilon() / 2 * amax;
+    if (solvable) steps_.reserve(m * std::min(m, n));
+    pivot_col_.reserve(std::min(m, n));
+    std::vector<size_t> nonzero;  // the columns right of the pivot where its row is not an exact 0
+    nonzero.reserve(n);
     size_t row = 0;
     for (size_t col = 0; col < n && row < m; ++col) {
       size_t best = m;
@@ -134,13 +155,18 @@ class LinearSystem {
       if (best == m) continue;
       if (best != row) {
         std::swap(a_[row], a_[best]);
-        steps_.push_back({true, row, best, T{}});
+        if (solvable) steps_.push_back({true, row, best, T{}});
       }
-      for (size_t r = 0; r < m; ++r) {
+      nonzero.clear();
+      for (size_t c = col + 1; c < n; ++c)
+        if (!is_zero(a_[row][c])) nonzero.push_back(c);
+      for (size_t r = solvable ? 0 : row + 1; r < m; ++r) {
         if (r == row || is_zero(a_[r][col])) continue;
         const T f = a_[r][col] / a_[row][col];
-        for (size_t c = col; c < n; ++c) a_[r][c] = a_[r][c] - f * a_[row][c];
-        steps_.push_back({false, row, r, f});
+        // a - (a / p) p is exactly 0 for the exact operands: an exact 0 encloses it.
+        a_[r][col] = from_int<T>(0);
+        for (const size_t c : nonzero) a_[r][c] = a_[r][c] - f * a_[row][c];
+        if (solvable) steps_.push_back({false, row, r, f});
       }
       pivot_col_.push_back(col);
       ++row;

@@ -19,37 +19,45 @@
 
 namespace linkproof {
 
+/// The motion field of one link (mechanism/poles.h): v0, a0 are the velocity and acceleration
+/// of the point of the link now at the world origin, so that
+///   v(X) = v0 + omega J X,      a(X) = a0 + omega-dot J X - omega^2 X.
+template <class T>
+struct LinkField {
+  T omega, omega_dot;
+  Vec2<T> v0, a0;
+  Vec2<T> velocity(const Vec2<T>& X) const { return v0 + omega * perp(X); }
+  Vec2<T> acceleration(const Vec2<T>& X) const { return a0 + omega_dot * perp(X) - (omega * omega) * X; }
+};
+
 template <class T>
 struct MechanismMotion {
   std::vector<T> omega, omega_dot;        ///< per link, relative to the ground (ground: 0)
   std::vector<T> slide, slide_dot;        ///< per joint: sigma-dot, sigma-ddot (revolute: 0)
-  std::vector<Vec2<T>> joint_v, joint_a;  ///< per joint; prismatic: the slider's point
+  std::vector<LinkField<T>> fields;       ///< per link (ground: 0)
+  std::vector<Vec2<T>> joint_v, joint_a;  ///< per joint; prismatic: the slider's point (JointMotion::Skip: empty)
 };
 
-/// Fills joint_v / joint_a from omega, omega_dot, slide, slide_dot (already set) by walking the
-/// spanning tree out from the ground with the formulas above.
+/// Whether complete_joint_motion fills joint_v / joint_a (a sampled configuration reads the
+/// links' fields alone).
+enum class JointMotion { Fill, Skip };
+
+/// Fills the links' fields and joint_v / joint_a from omega, omega_dot, slide, slide_dot
+/// (already set) by walking the spanning tree out from the ground with the formulas above: a
+/// link's field from its tree joint's point, moved with the field of the link it is entered
+/// from (and the sliding terms where that joint is prismatic).
 template <class T>
-void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m, const JointGeometry<T>& geo = {}) {
-  const size_t L = static_cast<size_t>(g.link_count());
-  // Per link: a reference point O (a joint position) with its velocity and acceleration.
-  std::vector<Vec2<T>> origin(L), v(L), a(L);
+void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m, const JointGeometry<T>& geo = {},
+                           JointMotion joints = JointMotion::Fill) {
   const Vec2<T> zero{from_int<T>(0), from_int<T>(0)};
-  for (auto& x : v) x = zero;
-  for (auto& x : a) x = zero;
-  const auto point_motion = [&](int link, const Vec2<T>& p, Vec2<T>& vp, Vec2<T>& ap) {
-    const size_t l = static_cast<size_t>(link);
-    const Vec2<T> r = p - origin[l];
-    vp = v[l] + m.omega[l] * perp(r);
-    ap = a[l] + m.omega_dot[l] * perp(r) - (m.omega[l] * m.omega[l]) * r;
-  };
-  origin[static_cast<size_t>(g.ground())] = zero;
+  m.fields.assign(static_cast<size_t>(g.link_count()), LinkField<T>{from_int<T>(0), from_int<T>(0), zero, zero});
   for (int link : g.tree_order()) {
     if (link == g.ground()) continue;
     const JointCrossing& c = g.tree_entry(link);
     const LinkageJoint& j = g.joint(c.joint);
     const Vec2<T> p = geo.position(g, c.joint);
-    Vec2<T> vp, ap;
-    point_motion(c.from, p, vp, ap);
+    const LinkField<T>& from = m.fields[static_cast<size_t>(c.from)];
+    Vec2<T> vp = from.velocity(p), ap = from.acceleration(p);
     if (const int s = g.sliding_sign(c); s != 0) {
       const size_t jj = static_cast<size_t>(c.joint);
       const Vec2<T> u = geo.direction(g, c.joint);
@@ -60,17 +68,21 @@ void complete_joint_motion(const Linkage& g, MechanismMotion<T>& m, const JointG
       vp = vp + sign * dv;
       ap = ap + sign * da;
     }
-    origin[static_cast<size_t>(link)] = p;
-    v[static_cast<size_t>(link)] = vp;
-    a[static_cast<size_t>(link)] = ap;
+    LinkField<T>& f = m.fields[static_cast<size_t>(link)];
+    f.omega = m.omega[static_cast<size_t>(link)];
+    f.omega_dot = m.omega_dot[static_cast<size_t>(link)];
+    f.v0 = vp - f.omega * perp(p);
+    f.a0 = ap - f.omega_dot * perp(p) + (f.omega * f.omega) * p;
   }
-  m.joint_v.assign(static_cast<size_t>(g.joint_count()), zero);
-  m.joint_a.assign(static_cast<size_t>(g.joint_count()), zero);
+  if (joints == JointMotion::Skip) return;
+  m.joint_v.resize(static_cast<size_t>(g.joint_count()));
+  m.joint_a.resize(static_cast<size_t>(g.joint_count()));
   for (int jn = 0; jn < g.joint_count(); ++jn) {
-    const LinkageJoint& j = g.joint(jn);
     // The revolute point is shared; for a prismatic pair report the slider's point.
-    point_motion(j.links[1], geo.position(g, jn), m.joint_v[static_cast<size_t>(jn)],
-                 m.joint_a[static_cast<size_t>(jn)]);
+    const LinkField<T>& f = m.fields[static_cast<size_t>(g.joint(jn).links[1])];
+    const Vec2<T> X = geo.position(g, jn);
+    m.joint_v[static_cast<size_t>(jn)] = f.velocity(X);
+    m.joint_a[static_cast<size_t>(jn)] = f.acceleration(X);
   }
 }
 

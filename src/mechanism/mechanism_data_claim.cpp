@@ -144,12 +144,7 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
   using P = PlanePoint<T>;
   const auto& a = n.children;
   const auto value = [&](size_t k) { return evaluate_node(a[k], f, scale); };
-  const auto link_motion = [&](bool relative) {
-    const LinkField<T>& m = field_of(a[1], f);
-    const Vec2<T>& X = position(a[0], f);
-    if (!relative) return RelativePointMotion<T>{m.velocity(X), m.acceleration(X)};
-    return relative_point_motion(m, field_of(a[2], f), X);
-  };
+  const auto relative_motion = [&] { return relative_point_motion(field_of(a[1], f), field_of(a[2], f), position(a[0], f)); };
   const auto slide = [&](const std::vector<T>& rates) { return rates[static_cast<size_t>(a[0].index)] * axis_length(a[0], f); };
   switch (n.word->evaluation) {
     case Q::Omega: return number(field_of(a[0], f).omega);
@@ -157,10 +152,10 @@ Value<T> call(const Node& n, const MechanismFrameOf<T>& f, SummandScale* scale) 
     case Q::Alpha: return number(field_of(a[0], f).omega_dot);
     case Q::AlphaRelative: return number(field_of(a[0], f).omega_dot - field_of(a[1], f).omega_dot);
     case Q::Position: return vector_value(position(a[0], f));
-    case Q::Velocity: return vector_value(link_motion(false).v);
-    case Q::VelocityRelative: return vector_value(link_motion(true).v);
-    case Q::Acceleration: return vector_value(link_motion(false).a);
-    case Q::AccelerationRelative: return vector_value(link_motion(true).a);
+    case Q::Velocity: return vector_value(field_of(a[1], f).velocity(position(a[0], f)));
+    case Q::VelocityRelative: return vector_value(relative_motion().v);
+    case Q::Acceleration: return vector_value(field_of(a[1], f).acceleration(position(a[0], f)));
+    case Q::AccelerationRelative: return vector_value(relative_motion().a);
     case Q::Pole: {
       const P p = construct_pole(field_of(a[0], f), field_of(a[1], f), n.text);
       if (p.kind == P::Kind::AtInfinity) undefined(n, "the pole is at infinity: omega(L) = omega(M), a relative translation");
@@ -230,7 +225,9 @@ template <class T>
 MechanismFrameOf<T>::MechanismFrameOf(const MechanismScene& s, const MechanismMotion<T>& m, std::vector<Vec2<T>> joints,
                                       std::vector<Vec2<T>> points, std::vector<Vec2<T>> axes, bool unit)
     : scene(s), motion(m), joint_at(std::move(joints)), point_at(std::move(points)), axis(std::move(axes)), unit_axes(unit),
-      fields(link_fields(s.linkage, m, JointGeometry<T>{&joint_at, &axis})) {}
+      fields(m.fields) {
+  LINKPROOF_ASSERT(fields.size() == static_cast<size_t>(s.linkage.link_count()), "a motion without its links' fields");
+}
 
 void bind_mechanism_claim(MechanismDataClaim& claim, const MechanismScene& scene) {
   bind(claim.lhs.root(), scene, claim.lhs.field());
@@ -299,6 +296,7 @@ ClaimSides<T> evaluate_mechanism_claim(const MechanismDataClaim& claim, const Me
     return Defined<T>(y ? v.get().y : v.get().x);
   };
   ClaimSides<T> s;
+  s.instances.reserve(2);
   if (claim.lhs.kind() == ClaimKind::Vector) {
     s.instances.push_back({"x", component(l, false), component(r, false), scale.largest});
     s.instances.push_back({"y", component(l, true), component(r, true), scale.largest});

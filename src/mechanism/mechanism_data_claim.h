@@ -36,15 +36,18 @@ using MechanismValue = MechanismValueOf<Rational>;
 template <class T>
 struct MechanismFrameOf {
   MechanismFrameOf(const MechanismScene& scene, const MechanismMotion<T>& motion);
-  /// Positions and axes given in T. `unit_axes`: every axis has length 1 by construction (the
-  /// symbolic axes (c, s) of a proof, read on c^2 + s^2 = 1), so sliding rates need no |u|.
+  /// Positions and axes given in T: those the motion was solved at. `unit_axes`: every axis has
+  /// length 1 by construction (the symbolic axes (c, s) of a proof, read on c^2 + s^2 = 1), so
+  /// sliding rates need no |u|.
   MechanismFrameOf(const MechanismScene& scene, const MechanismMotion<T>& motion, std::vector<Vec2<T>> joint_at,
                    std::vector<Vec2<T>> point_at, std::vector<Vec2<T>> axis, bool unit_axes);
   const MechanismScene& scene;
   const MechanismMotion<T>& motion;
   std::vector<Vec2<T>> joint_at, point_at, axis;  ///< per joint, per tracer point, per joint
   bool unit_axes = false;
-  std::vector<LinkField<T>> fields;  ///< per link (mechanism/poles.h)
+  /// Per link: the motion's (mechanism/linkage_motion.h), made with the positions it was solved
+  /// at, which are the frame's.
+  const std::vector<LinkField<T>>& fields;
 };
 using MechanismFrame = MechanismFrameOf<Rational>;
 

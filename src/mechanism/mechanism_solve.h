@@ -76,15 +76,20 @@ void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inpu
 
 /// Solves velocity then acceleration. `A` is the constraint matrix; `acceleration_rhs(qdot)`
 /// returns h(q-dot) (constraint_count entries). `values`: the inputs' rates in T (optional);
-/// `geo`: where the joints are for the joints' velocities (default: the linkage's positions).
+/// `geo`: where the joints are for the joints' velocities (default: the linkage's positions);
+/// `joints`: whether joint_v / joint_a are filled (the links' fields always are).
 template <class T, class AccelerationRhs>
-MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<MechanismInput>& inputs,
-                                     const DenseMatrix<T>& A, AccelerationRhs acceleration_rhs,
-                                     const std::string& source, const std::vector<InputValue<T>>* values = nullptr,
-                                     const JointGeometry<T>& geo = {}) {
+MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<MechanismInput>& inputs, DenseMatrix<T> A,
+                                     AccelerationRhs acceleration_rhs, const std::string& source,
+                                     const std::vector<InputValue<T>>* values = nullptr,
+                                     const JointGeometry<T>& geo = {}, JointMotion joints = JointMotion::Fill) {
   const size_t N = static_cast<size_t>(g.unknown_count());
+  const size_t constraints = A.size();
   MechanismSolution<T> s;
-  s.rank = LinearSystem<T>(A).rank();
+  // The rank of A alone (the mobility) is its own elimination: pivoting the constraint rows
+  // before the input rows would, in floating point, pivot on a rounding residue where an input
+  // row (a unit row) is the better pivot (a crank 100 times shorter than the other links).
+  s.rank = LinearSystem<T>::rank_of(A);
   s.mobility = static_cast<int>(N) - s.rank;
   if (s.mobility == 0)
     throw InputError(source, "mechanism.joints",
@@ -95,29 +100,34 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
                      fmt::format("the mechanism has mobility {} (rank of the velocity constraints {}, {} unknowns; "
                                  "Gruebler count {}) and needs {} input(s), got {}",
                                  s.mobility, s.rank, N, g.grubler_mobility(), s.mobility, inputs.size()));
-  DenseMatrix<T> Av = A;
-  std::vector<T> bv(A.size(), from_int<T>(0));
-  append_input_rows(g, inputs, Av, bv, false, source, values);
+  std::vector<T> bv(constraints, from_int<T>(0));
+  bv.reserve(constraints + inputs.size());
+  A.reserve(constraints + inputs.size());
+  append_input_rows(g, inputs, A, bv, false, source, values);
   // Velocity and acceleration: one matrix (the constraints and the input rows), two right-hand sides.
-  const LinearSystem<T> system(std::move(Av));
-  const LinearSolution<T> vel = system.solve(std::move(bv));
+  const LinearSystem<T> system(std::move(A));
+  LinearSolution<T> vel = system.solve(std::move(bv));
   if (vel.rank < static_cast<int>(N))
     throw InputError(source, "mechanism.inputs",
                      "the inputs do not fix the motion: some input is dependent on the others or on the constraints "
                      "(e.g. it drives a link that cannot move), so another part of the mechanism stays free");
   if (!vel.consistent)
     throw InputError(source, "mechanism.inputs", "the inputs contradict the constraints");
-  s.qdot = vel.x;
+  s.qdot = std::move(vel.x);
   std::vector<T> ba = acceleration_rhs(s.qdot);
-  LINKPROOF_ASSERT(ba.size() == A.size(), "acceleration right-hand side has the wrong size");
+  LINKPROOF_ASSERT(ba.size() == constraints, "acceleration right-hand side has the wrong size");
   append_input_rates(inputs, ba, true, values);
-  const LinearSolution<T> acc = system.solve(std::move(ba));
+  LinearSolution<T> acc = system.solve(std::move(ba));
   if (!acc.consistent || acc.x.size() != N)
     throw InputError(source, "mechanism.inputs", "the acceleration inputs contradict the constraints");
-  s.qddot = acc.x;
+  s.qddot = std::move(acc.x);
 
   MechanismMotion<T>& m = s.motion;
   const T zero = from_int<T>(0);
+  m.omega.reserve(static_cast<size_t>(g.link_count()));
+  m.omega_dot.reserve(static_cast<size_t>(g.link_count()));
+  m.slide.reserve(static_cast<size_t>(g.joint_count()));
+  m.slide_dot.reserve(static_cast<size_t>(g.joint_count()));
   for (int l = 0; l < g.link_count(); ++l) {
     const int c = g.unknown_of_link(l);
     m.omega.push_back(c < 0 ? zero : s.qdot[static_cast<size_t>(c)]);
@@ -128,7 +138,7 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
     m.slide.push_back(c < 0 ? zero : s.qdot[static_cast<size_t>(c)]);
     m.slide_dot.push_back(c < 0 ? zero : s.qddot[static_cast<size_t>(c)]);
   }
-  complete_joint_motion(g, m, geo);
+  complete_joint_motion(g, m, geo, joints);
   return s;
 }
 

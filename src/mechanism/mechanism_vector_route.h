@@ -37,6 +37,7 @@ template <class T>
 DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const JointGeometry<T>& geo = {}) {
   const size_t N = static_cast<size_t>(g.unknown_count());
   DenseMatrix<T> A;
+  A.reserve(static_cast<size_t>(g.constraint_count()));
   for (const LinkageLoop& loop : g.loops()) {
     std::vector<T> rx(N, from_int<T>(0)), ry(N, from_int<T>(0));
     const size_t k = loop.crossings.size();
@@ -79,6 +80,7 @@ std::vector<T> rigid_body_acceleration_rhs(const Linkage& g, const std::vector<T
     return c < 0 ? from_int<T>(0) : qdot[static_cast<size_t>(c)];
   };
   std::vector<T> h;
+  h.reserve(static_cast<size_t>(g.constraint_count()));
   for (const LinkageLoop& loop : g.loops()) {
     Vec2<T> acc{from_int<T>(0), from_int<T>(0)};
     const size_t k = loop.crossings.size();

@@ -73,18 +73,15 @@ PlanePoint<T> intersect_lines(const Vec2<T>& p1, const Vec2<T>& p2, const Vec2<T
   return PlanePoint<T>::finite(p1 + (cross(p3 - p1, d2) / den) * d1);
 }
 
-/// The motion field of one link (see the header comment).
+/// The field of every link read at the first joint it has (in the joints' order), from the
+/// joints' motion (joint_v / joint_a filled). The same fields as the motion's own
+/// (complete_joint_motion, read along the spanning tree) for numbers; for the symbolic proof
+/// (proof/mechanism_proof.cpp) the form matters: two links that meet at a joint are then read at
+/// it, so their relative motion there cancels term by term (vel(S, block, guide) is
+/// sliding_v(S) u without the loop closure) and the proof needs no exceptional set for it.
 template <class T>
-struct LinkField {
-  T omega, omega_dot;
-  Vec2<T> v0, a0;
-  Vec2<T> velocity(const Vec2<T>& X) const { return v0 + omega * perp(X); }
-  Vec2<T> acceleration(const Vec2<T>& X) const { return a0 + omega_dot * perp(X) - (omega * omega) * X; }
-};
-
-/// The field of every link, from a solved motion (joint_v/joint_a filled).
-template <class T>
-std::vector<LinkField<T>> link_fields(const Linkage& g, const MechanismMotion<T>& m, const JointGeometry<T>& geo = {}) {
+std::vector<LinkField<T>> link_fields_from_joints(const Linkage& g, const MechanismMotion<T>& m,
+                                                  const JointGeometry<T>& geo = {}) {
   std::vector<LinkField<T>> out(static_cast<size_t>(g.link_count()));
   std::vector<bool> done(out.size(), false);
   const Vec2<T> zero{from_int<T>(0), from_int<T>(0)};

@@ -172,6 +172,7 @@ SymbolicMotion solve_symbolically(const MechanismScene& s, const SymbolicConfigu
     m.slide_dot.push_back(col < 0 ? ex(0) : qddot[static_cast<size_t>(col)]);
   }
   complete_joint_motion(g, m, geo);
+  m.fields = link_fields_from_joints(g, m, geo);  // the form the proof's cancellations need (mechanism/poles.h)
   MechanismMotion<ex>& f = out.free_rates;
   const auto free_rate = [&](const std::string& name, int col, const std::vector<ex>& solved) {
     if (col < 0) return ex(0);
@@ -189,6 +190,7 @@ SymbolicMotion solve_symbolically(const MechanismScene& s, const SymbolicConfigu
     f.slide_dot.push_back(free_rate("sdd_" + g.joint(j).name, g.unknown_of_joint(j), qddot));
   }
   complete_joint_motion(g, f, geo);
+  f.fields = link_fields_from_joints(g, f, geo);
   return out;
 }
 

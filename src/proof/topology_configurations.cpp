@@ -139,23 +139,25 @@ std::optional<std::vector<Verdict>> configuration_verdicts(const MechanismScene&
   using Clock = std::chrono::steady_clock;
   // Solved from the values in T alone (the topology's linkage, the configuration's geometry):
   // the scene is built only for a failure, which must be confirmed and replayed.
-  const TopologyValuesIn<T> values = topology_values_in<T>(topology, layout, config);
-  const JointGeometry<T> geo = values.geometry();
-  const Linkage& g = topology.linkage;
+  TopologyValuesIn<T> values = topology_values_in<T>(topology, layout, config);
   std::optional<MechanismSolution<T>> solution;
   try {
+    const JointGeometry<T> geo = values.geometry();
+    const Linkage& g = topology.linkage;
     solution = solve_mechanism<T>(
         g, topology.inputs, rigid_body_constraint_matrix<T>(g, geo),
         [&](const std::vector<T>& qd) { return rigid_body_acceleration_rhs<T>(g, qd, true, geo); },
         topology.source,  // its errors only say "singular here" (nullopt): no name is made for them
-        &values.inputs, geo);
+        &values.inputs, geo, JointMotion::Skip);  // the claims read the links' fields
   } catch (const InputError&) {
     return std::nullopt;
   } catch (const cln::floating_point_exception&) {
     return std::nullopt;
   }
-  // The sampled axes are exactly unit vectors (Pythagorean directions).
-  const MechanismFrameOf<T> frame(topology, solution->motion, values.joint_at, values.point_at, values.axis, true);
+  // The positions move into the frame (nothing reads `values` after). The sampled axes are
+  // exactly unit vectors (Pythagorean directions).
+  const MechanismFrameOf<T> frame(topology, solution->motion, std::move(values.joint_at), std::move(values.point_at),
+                                  std::move(values.axis), true);
   std::optional<MechanismSolution<Rational>> exact;
   std::optional<MechanismScene> s;
   std::vector<Verdict> out(claims.size(), Verdict::Holds);

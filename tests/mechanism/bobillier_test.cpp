@@ -21,7 +21,7 @@ struct FourBarCase {
 FourBarCase random_fourbar() {
   FourBarCase c{random_scene(testing::fourbar_topology()), {}, {}, {}, {}, {}};
   const MechanismSolution<Rational> truth = testing::solve_or_discard(c.scene);
-  c.fields = link_fields(c.scene.linkage, truth.motion);
+  c.fields = truth.motion.fields;
   c.O2 = c.scene.linkage.joint(0).at, c.A = c.scene.linkage.joint(1).at;
   c.B = c.scene.linkage.joint(2).at, c.O4 = c.scene.linkage.joint(3).at;
   return c;
@@ -55,7 +55,7 @@ TEST(Bobillier, MirroredStepCMissesTheCentreInAlmostEveryRandomFourBar) {
     } catch (const InputError&) {
       continue;
     }
-    const auto fields = link_fields(s.linkage, truth.motion);
+    const auto& fields = truth.motion.fields;
     const auto& g = s.linkage;
     const Vec2<Rational> C = point();
     const PP analytic = construct_curvature_centre(C, relative_point_motion(fields[2], fields[0], C), "centre");

@@ -1,12 +1,14 @@
 // solve_linear_system: the exact (sparse) route gives the rank, consistency and solution of a
 // dense reference elimination, on square, rectangular and rank-deficient systems; the floating
 // route, one elimination replayed on several right-hand sides (LinearSystem), gives the same
-// bits as eliminating each [A | b] on its own.
+// bits as eliminating each [A | b] on its own, and every solution encloses the exact one.
 #include "mechanism/linear_system.h"
 
+#include <cln/rational.h>
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -75,7 +77,9 @@ TEST(LinearSystem, ExactSparseRouteAgreesWithDenseEliminationOnRandomSystems) {
 
 
 /// Reference for the floating route: partial pivoting on [A | b] (the pivot with the largest
-/// midpoint among those above max(m, n) u max|A_ij|), written out here.
+/// midpoint among those above max(m, n) u max|A_ij|), written out here; a row operation writes
+/// the exact 0 it makes in the pivot's column and leaves the entries where the pivot row is an
+/// exact 0.
 LinearSolution<Tracked<double>> augmented_reference(DenseMatrix<Tracked<double>> A, std::vector<Tracked<double>> b) {
   using T = Tracked<double>;
   const size_t m = A.size(), n = m ? A[0].size() : 0;
@@ -94,10 +98,13 @@ LinearSolution<Tracked<double>> augmented_reference(DenseMatrix<Tracked<double>>
     if (best == m) continue;
     std::swap(A[row], A[best]);
     std::swap(b[row], b[best]);
+    const auto exact_zero = [](const T& v) { return v.v == 0 && v.e == 0; };
     for (size_t r = 0; r < m; ++r) {
-      if (r == row || (A[r][col].v == 0 && A[r][col].e == 0)) continue;
+      if (r == row || exact_zero(A[r][col])) continue;
       const T f = A[r][col] / A[row][col];
-      for (size_t c = col; c < n; ++c) A[r][c] = A[r][c] - f * A[row][c];
+      A[r][col] = T(0);  // exactly 0 for the exact operands
+      for (size_t c = col + 1; c < n; ++c)
+        if (!exact_zero(A[row][c])) A[r][c] = A[r][c] - f * A[row][c];  // a - f 0 = a
       b[r] = b[r] - f * b[row];
     }
     pivots.push_back(col);
@@ -108,6 +115,24 @@ LinearSolution<Tracked<double>> augmented_reference(DenseMatrix<Tracked<double>>
   if (out.consistent && row == n) {
     out.x.assign(n, T(0));
     for (size_t r = 0; r < row; ++r) out.x[pivots[r]] = b[r] / A[r][pivots[r]];
+  }
+  return out;
+}
+
+// A double's exact value (subnormals too: CLN's double floats have none).
+Rational exact_of(double v) {
+  if (v == 0) return 0;
+  int e = 0;
+  const double m = std::frexp(v, &e);  // v = m 2^e, 1/2 <= |m| < 1
+  return Rational(static_cast<long long>(std::ldexp(m, 53))) * cln::expt(Rational(2), e - 53);
+}
+
+DenseMatrix<Rational> exact_rows(const DenseMatrix<Tracked<double>>& A) {
+  DenseMatrix<Rational> out;
+  for (const auto& row : A) {
+    std::vector<Rational> r;
+    for (const auto& v : row) r.push_back(exact_of(v.v));
+    out.push_back(r);
   }
   return out;
 }
@@ -142,6 +167,7 @@ TEST(LinearSystem, OneFloatingEliminationReplayedOnTwoRightHandSidesIsBitForBitE
       const auto ref = augmented_reference(A, b);
       const auto got = system.solve(b);
       EXPECT_EQ(system.rank(), ref.rank);
+      EXPECT_EQ(LinearSystem<T>::rank_of(A), ref.rank);
       EXPECT_EQ(got.rank, ref.rank);
       EXPECT_EQ(got.consistent, ref.consistent);
       ASSERT_EQ(got.x.size(), ref.x.size());
@@ -150,6 +176,78 @@ TEST(LinearSystem, OneFloatingEliminationReplayedOnTwoRightHandSidesIsBitForBitE
     }
   }
   EXPECT_GT(solved, 100);  // the trials exercise solutions, not only rank-deficient systems
+}
+
+
+// The exact solution of a system whose entries are the midpoints (radius 0): every floating
+// solution must enclose it, x.v - x.e <= x <= x.v + x.e (core/tracked.h), whatever the pivots.
+std::vector<Rational> exact_solution_of_midpoints(const DenseMatrix<Tracked<double>>& A, const std::vector<Tracked<double>>& b) {
+  const DenseMatrix<Rational> Aq = exact_rows(A);
+  std::vector<Rational> bq;
+  for (const auto& v : b) bq.push_back(exact_of(v.v));
+  return solve_linear_system<Rational>(Aq, bq).x;
+}
+
+bool encloses(const Tracked<double>& x, const Rational& exact) {
+  return std::isfinite(x.e) && cln::abs(exact - exact_of(x.v)) <= exact_of(x.e);
+}
+
+TEST(LinearSystem, EveryFloatingSolutionEnclosesTheExactSolutionOfItsMidpoints) {
+  const unsigned seed = 31;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> small(-9, 9), size(1, 6), zero(0, 2);
+  using T = Tracked<double>;
+  int enclosed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    // A mechanism's shape: constraint rows (mostly zeros, sometimes a dependent one), then unit
+    // input rows; radius 0, so the exact solution of the midpoints is the one to enclose.
+    const size_t n = static_cast<size_t>(size(rng));
+    const size_t inputs = static_cast<size_t>(std::uniform_int_distribution<int>(0, 2)(rng));
+    const size_t constraints = n > inputs ? n - inputs + (trial % 5 == 0 ? 1 : 0) : 1;
+    DenseMatrix<T> A(constraints, std::vector<T>(n, T(0)));
+    for (auto& row : A)
+      for (T& v : row)
+        if (zero(rng) != 0) v = T(std::ldexp(small(rng), std::uniform_int_distribution<int>(-8, 8)(rng)), 0.0);
+    if (constraints > 1 && trial % 3 == 0)
+      for (size_t c = 0; c < n; ++c) A[constraints - 1][c] = A[0][c] * T(3);
+    for (size_t k = 0; k < inputs; ++k) {
+      std::vector<T> row(n, T(0));
+      row[static_cast<size_t>(std::uniform_int_distribution<int>(0, static_cast<int>(n) - 1)(rng))] = T(1);
+      A.push_back(row);
+    }
+    std::vector<T> b(A.size(), T(0));
+    for (T& v : b) v = T(small(rng));
+    SCOPED_TRACE("seed " + std::to_string(seed) + ", trial " + std::to_string(trial));
+    const LinearSystem<T> system(A);
+    EXPECT_EQ(system.rank(), LinearSystem<Rational>(exact_rows(A)).rank());
+    EXPECT_EQ(LinearSystem<T>::rank_of(A), system.rank());
+    const LinearSolution<T> got = system.solve(b);
+    const std::vector<Rational> exact = exact_solution_of_midpoints(A, b);
+    if (got.x.empty() || exact.empty()) continue;
+    for (size_t c = 0; c < n; ++c) EXPECT_TRUE(encloses(got.x[c], exact[c])) << "x[" << c << "]";
+    ++enclosed;
+  }
+  EXPECT_GT(enclosed, 50);  // the trials exercise solutions, not only singular systems
+}
+
+TEST(LinearSystem, AnInputRowIsThePivotWhereTheConstraintsLeaveOnlyARoundingResidue) {
+  // A four-bar with a crank 100 times shorter than its other links, its joints rounded to double
+  // (O2 = (2, 0), A = (2.01, 0.01), B = (3, 1), O4 = (0, 0)): eliminating the loop's two rows
+  // first leaves 2e-14 +- 2.2e-14 in the coupler's column, which is no pivot; the crank's unit
+  // input row is. Every rate is then bounded and encloses the exact one.
+  using T = Tracked<double>;
+  const T O2x = from_rational<T>(2), Ax = from_rational<T>(Rational(201) / 100), Ay = from_rational<T>(Rational(1) / 100);
+  const T Bx = from_rational<T>(3), By = from_rational<T>(1), z = from_int<T>(0);
+  const T crank_x = Ax - O2x, crank_y = Ay - z, coupler_x = Bx - Ax, coupler_y = By - Ay;
+  const DenseMatrix<T> A{{-crank_y, -coupler_y, By}, {crank_x, coupler_x, z - Bx}, {T(1), T(0), T(0)}};
+  const LinearSolution<T> got = LinearSystem<T>(A).solve({z, z, T(1)});
+  ASSERT_EQ(got.x.size(), 3u);
+  // The exact rates of the exact four-bar (omega_crank = 1): omega_coupler = -1/99, omega_rocker = 0.
+  const std::vector<Rational> exact{1, Rational(-1) / 99, 0};
+  for (size_t c = 0; c < 3; ++c) {
+    EXPECT_LT(got.x[c].e, 1e-12) << "x[" << c << "]";
+    EXPECT_TRUE(encloses(got.x[c], exact[c])) << "x[" << c << "]";  // the joints' rounding is in the radii
+  }
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ bool is_eightbar(const MechanismContext& c) {
 struct EightBar {
   const Linkage& g;
   std::vector<LinkField<Rational>> fields;
-  explicit EightBar(const MechanismContext& c) : g(c.scene.linkage), fields(link_fields(g, c.truth.motion)) {}
+  explicit EightBar(const MechanismContext& c) : g(c.scene.linkage), fields(c.truth.motion.fields) {}
   Vec2<Rational> J(const char* name) const { return g.joint(joint_between(g, std::string(1, name[0]), std::string(1, name[1]))).at; }
   int link(const std::string& n) const { return *g.find_link(n); }
   const LinkField<Rational>& field(const std::string& n) const { return fields[static_cast<size_t>(link(n))]; }
@@ -99,7 +99,7 @@ ClaimSides<Rational> section3_poles(const MechanismContext& c, bool printed_p60)
     P3p0 = EightBar::meet(e.J("12"), e.J("01"), I35, e.J("04"), "P3'0");
     Linkage reduced;
     const auto m = fig1b_motion(c, reduced);
-    const auto f = link_fields(reduced, m.motion);
+    const auto& f = m.motion.fields;
     const auto field = [&](const char* n) { return f[static_cast<size_t>(*reduced.find_link(n))]; };
     compare_point(s, "P63' (reduced linkage, Fig. 1B)", P63p, construct_pole(field("6"), field("3"), "P63'"));
     compare_point(s, "P3'0 (reduced linkage, Fig. 1B)", P3p0, construct_pole(field("3"), field("0"), "P3'0"));
