@@ -26,6 +26,7 @@
 
 #include "linkproof/core/error.h"
 #include "core/scalar.h"
+#include "core/stable_radix_sort.h"
 
 namespace linkproof {
 
@@ -93,6 +94,8 @@ class Monomial {
   friend bool operator==(const Monomial& a, const Monomial& b) {
     return a.words_[0] == b.words_[0] && a.words_[1] == b.words_[1];
   }
+  /// The two words, whose integer order (word 0 first) is the monomials' order: a radix key.
+  const std::array<std::uint64_t, 2>& key() const { return words_; }
 
  private:
   static int shift(int i) { return 48 - 16 * (i % 4); }
@@ -245,7 +248,7 @@ class RatePoly {
       for (size_t i = 1; i < terms_.size(); ++i)  // insertion sort: no buffer for small polynomials
         for (size_t k = i; k > 0 && by_monomial(terms_[k], terms_[k - 1]); --k) std::swap(terms_[k], terms_[k - 1]);
     } else {
-      std::stable_sort(terms_.begin(), terms_.end(), by_monomial);
+      stable_sort_by_key<2>(terms_, [](const Term& t) { return t.first.key(); });
     }
     size_t out = 0;
     for (size_t i = 1; i < terms_.size(); ++i) {

@@ -28,12 +28,14 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "linkproof/core/error.h"
 #include "core/scalar.h"
+#include "core/stable_radix_sort.h"
 #include "symbolic/tape.h"
 
 namespace linkproof {
@@ -119,7 +121,7 @@ class TapeJetEvaluator {
   /// floating-point results depend only on the tape.
   template <class K>
   static void combine(std::vector<std::pair<K, T>>& v) {
-    std::stable_sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    stable_sort_by_key<1>(v, [](const std::pair<K, T>& e) { return std::array<std::uint64_t, 1>{e.first}; });
     size_t w = 0;
     for (size_t i = 0; i < v.size(); ++i) {
       if (w > 0 && v[w - 1].first == v[i].first) {

@@ -142,6 +142,40 @@ TEST(RatePolyTerms, RandomSumsAndProductsGiveTheMapsTermsBitForBit) {
   }
 }
 
+// A sum over pairs at large n: thousands of terms arriving out of order, many monomials more
+// than once (sorted by radix, core/stable_radix_sort.h, above 256 terms). The terms must be the
+// map's, each coefficient summed in the order its terms arrived, bit for bit.
+TEST(RatePolyTerms, LargeUnsortedSumsGiveTheMapsTermsBitForBit) {
+  const unsigned seed = 20261127;
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937 rng(seed);
+  // Ids of one byte (up to 3 varying bytes: the packed radix path) or two (up to 6: the full one).
+  for (const int ids : {40, 2000}) {
+    std::uniform_int_distribution<int> id(2, ids), degree(0, 3);
+    std::uniform_real_distribution<double> coef(-1, 1);
+    RatePoly<double> p;
+    Reference ref;
+    for (int t = 0; t < 20000; ++t) {
+      std::vector<int> m;
+      for (int d = degree(rng); d > 0; --d) m.push_back(id(rng));
+      std::sort(m.begin(), m.end());
+      const double c = coef(rng);
+      RatePoly<double> term(c);
+      for (int i : m) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
+      p += term;
+      auto [it, fresh] = ref.emplace(m, c);
+      if (!fresh) it->second = it->second + c;
+    }
+    ASSERT_EQ(p.terms().size(), ref.size());
+    auto it = ref.begin();
+    for (const auto& [m, c] : p.terms()) {
+      ASSERT_EQ(ids_of(m), it->first);
+      ASSERT_EQ(c, it->second) << "coefficient of " << monomial_label(m);
+      ++it;
+    }
+  }
+}
+
 TEST(RatePolyTerms, ZeroCoefficientsAreKeptAndAbsentOnesReadAsZero) {
   const auto w = RatePoly<double>::variable({1, RateVariable::Omega});
   const RatePoly<double> p = w - w;
