@@ -18,15 +18,15 @@ namespace linkproof {
 namespace {
 
 using GiNaC::ex;
-using Clock = std::chrono::steady_clock;
+using ProveClock = std::chrono::steady_clock;
 using namespace proof_detail;
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(ProveClock::time_point t) { return std::chrono::duration<double>(ProveClock::now() - t).count(); }
 
 /// The per-n proof, with the sides named as `names` prints them in the exceptional set.
 PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std::vector<std::string>* not_local,
                    std::vector<ExceptionalSet>* except, const SideNames& names, bool general) {
-  const auto start = Clock::now();
+  const auto start = ProveClock::now();
   PerNProof r;
   r.n = n;
   const SymbolicPolygon sp = make_symbolic_polygon(n, names);
@@ -150,7 +150,7 @@ PerNProof prove_for_n(GroundTruthEngine& engine, const DataClaim& claim, int n, 
 }
 
 ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const ProveOptions& o) {
-  const auto start = Clock::now();
+  const auto start = ProveClock::now();
   ProofResult r;
   r.id = claim.info.id;
   r.expected = claim.info.expected;
@@ -212,7 +212,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
       }
       // 3. Per-n proofs for the rest of the range while the budget lasts: a finite range is
       //    covered by them when the lift does not apply; otherwise they re-check it, if asked.
-      const auto ladder_start = Clock::now();
+      const auto ladder_start = ProveClock::now();
       for (int n = lo; !disproved && (!all_n || o.recheck_proved) && (hi == 0 || n <= hi); ++n) {
         if (std::find(r.proved_n.begin(), r.proved_n.end(), n) != r.proved_n.end()) continue;
         if (o.n_max && n > o.n_max) break;
