@@ -21,7 +21,7 @@ using GiNaC::ex;
 using ProveClock = std::chrono::steady_clock;
 using namespace proof_detail;
 
-double since(ProveClock::time_point t) { return std::chrono::duration<double>(ProveClock::now() - t).count(); }
+double prove_seconds_since(ProveClock::time_point t) { return std::chrono::duration<double>(ProveClock::now() - t).count(); }
 
 /// The per-n proof, with the sides named as `names` prints them in the exceptional set.
 PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std::vector<std::string>* not_local,
@@ -83,7 +83,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     divisors.insert(divisors.end(), claim_divisors.begin(), claim_divisors.end());
     *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr, normalizer);
   }
-  r.seconds = since(start);
+  r.seconds = prove_seconds_since(start);
   return r;
 }
 
@@ -216,7 +216,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
       for (int n = lo; !disproved && (!all_n || o.recheck_proved) && (hi == 0 || n <= hi); ++n) {
         if (std::find(r.proved_n.begin(), r.proved_n.end(), n) != r.proved_n.end()) continue;
         if (o.n_max && n > o.n_max) break;
-        if (since(ladder_start) > o.ladder_seconds) break;
+        if (prove_seconds_since(ladder_start) > o.ladder_seconds) break;
         prove_n(n, nullptr, numbered_side, false);
       }
       std::sort(r.proved_n.begin(), r.proved_n.end());
@@ -278,7 +278,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
     r.verdict = ProofVerdict::Error;
     r.error = e.what();
   }
-  r.seconds = since(start);
+  r.seconds = prove_seconds_since(start);
   return r;
 }
 
