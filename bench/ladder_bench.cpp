@@ -37,7 +37,7 @@ std::vector<LadderCase<T>> ladder_cases(benchmark::State& state, int n) {
   return out;
 }
 
-void set_per_side(benchmark::State& state, int n) {
+void set_ladder_per_side(benchmark::State& state, int n) {
   state.counters["per_side"] =
       benchmark::Counter(n - 3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
@@ -56,7 +56,7 @@ void BM_Route(benchmark::State& state) {
     benchmark::DoNotOptimize(v);
   }
   state.SetLabel(std::string(to_string(route)) + " " + arithmetic_name<T>() + " " + families(make_cases(n, 16)));
-  set_per_side(state, n);
+  set_ladder_per_side(state, n);
 }
 
 void BM_Adaptive(benchmark::State& state) {
@@ -68,7 +68,7 @@ void BM_Adaptive(benchmark::State& state) {
     AdaptiveResult r = compute_omega_dot_adaptive(c.polygon, c.rates);
     benchmark::DoNotOptimize(r);
   }
-  set_per_side(state, n);
+  set_ladder_per_side(state, n);
 }
 
 void route_args(benchmark::internal::Benchmark* b) {

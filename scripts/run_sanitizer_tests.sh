@@ -7,7 +7,8 @@
 #   2. the fuzz targets (tests/fuzz/CMakeLists.txt), LINKPROOF_FUZZ_RUNS executions each from the seed corpus
 #      (`ctest -L fuzz`): a crash, a sanitizer report, a hang (> 10 s) or > 2 GB fails.
 # In CI (CI set, as .ci/run is run) a compiler warning fails the build, as in scripts/build.sh:
-# -DLINKPROOF_WERROR=ON (cmake/LinkproofWarnings.cmake), so clang's warnings count as g++'s do.
+# -DLINKPROOF_WERROR=ON (cmake/LinkproofWarnings.cmake), so clang's warnings count as g++'s do,
+# and the tree is a unity build, -DLINKPROOF_UNITY=ON (cmake/LinkproofUnity.cmake), as CI's g++ one.
 # Extra arguments go to the cmake configure step (e.g. -DLINKPROOF_FUZZ_RUNS=100000).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -19,11 +20,11 @@ launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
-werror=()
-if [[ -n "${CI:-}" ]]; then werror=(-DLINKPROOF_WERROR=ON); fi
+ci_flags=()
+if [[ -n "${CI:-}" ]]; then ci_flags=(-DLINKPROOF_WERROR=ON -DLINKPROOF_UNITY=ON); fi
 configure=(cmake -S . -B build-fuzz "${generator[@]}" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug
            "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -gline-tables-only" -DLINKPROOF_FUZZ=ON -DLINKPROOF_BUILD_BENCH=OFF
-           "${launcher[@]}" "${werror[@]}" "$@")
+           "${launcher[@]}" "${ci_flags[@]}" "$@")
 echo "==> sanitizer: ${configure[*]}"
 "${configure[@]}"
 targets=(linkproof_unit_tests fuzz_polygon_scene fuzz_mechanism_scene fuzz_claim_file fuzz_cli_args fuzz_report

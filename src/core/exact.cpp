@@ -26,7 +26,7 @@ cln::cl_I parse_digits(std::string_view digits) {
   return cln::cl_I(std::string(digits).c_str());
 }
 
-constexpr long kMaxExponent = 4000;  // 10^4000 is already far beyond any linkage; stops DoS input
+constexpr long kMaxDecimalExponent = 4000;  // 10^4000 is already far beyond any linkage; stops DoS input
 
 }  // namespace
 
@@ -87,7 +87,7 @@ Rational parse_rational(std::string_view text) {
     if (exp_negative) exp10 = -exp10;
   }
   exp10 -= static_cast<long>(frac_part.size());
-  if (exp10 > kMaxExponent || exp10 < -kMaxExponent) fail("exponent out of range (|e| <= 4000)");
+  if (exp10 > kMaxDecimalExponent || exp10 < -kMaxDecimalExponent) fail("exponent out of range (|e| <= 4000)");
 
   std::string digits = std::string(int_part) + std::string(frac_part);
   Rational r = parse_digits(digits);

@@ -19,9 +19,9 @@ namespace linkproof {
 
 namespace {
 
-using F = MpFloat<kDimensionedBoundDigits>;
-using T = Tracked<F>;
-using Traits = TrackedTraits<F>;
+using BoundFloat = MpFloat<kDimensionedBoundDigits>;
+using T = Tracked<BoundFloat>;
+using Traits = TrackedTraits<BoundFloat>;
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
@@ -43,9 +43,9 @@ double width(const Vec2<T>& x) { return std::max(width(x.x), width(x.y)); }
 /// (each end enclosed in rationals, enclose_square_root) holds it; unbounded otherwise.
 T enclosed_sqrt(const T& q) {
   const Rational mid = to_exact(q);
-  if (Traits::is_unbounded(q.e)) return {F(mid), Traits::unbounded()};
+  if (Traits::is_unbounded(q.e)) return {BoundFloat(mid), Traits::unbounded()};
   const Rational e = q.e.to_rational(), lo = mid - e, hi = mid + e;
-  if (!cln::plusp(lo)) return {F(mid), Traits::unbounded()};
+  if (!cln::plusp(lo)) return {BoundFloat(mid), Traits::unbounded()};
   constexpr int kBits = 512;  // beyond the 100 digits (333 bits) of the solve
   const RationalEnclosure a = enclose_square_root(lo, kBits), b = enclose_square_root(hi, kBits);
   const Rational low = a.midpoint - a.half_width, high = b.midpoint + b.half_width;

@@ -24,11 +24,11 @@ namespace linkproof {
 namespace {
 
 using GiNaC::ex;
-using Clock = std::chrono::steady_clock;
+using ProofClock = std::chrono::steady_clock;
 using proof_detail::NamedDegeneracies;
 using proof_detail::RationalNormalizer;
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(ProofClock::time_point t) { return std::chrono::duration<double>(ProofClock::now() - t).count(); }
 
 // The free coordinates of the topology as GiNaC symbols (see the header comment).
 struct SymbolicConfiguration {
@@ -399,7 +399,7 @@ class TopologyProver {
   TopologyProver(const MechanismScene& s, const TopologyProofOptions& o) : scene_(s), options_(o) {}
 
   TopologyProof prove(const MechanismDataClaim& claim) {
-    const auto start = Clock::now();
+    const auto start = ProofClock::now();
     TopologyProof p;
     p.info = claim.info;
     // A wrong claim usually fails on the first configurations: disproved without symbolic work.
@@ -414,7 +414,7 @@ class TopologyProver {
   }
 
   TopologyProofRun run(const std::vector<MechanismDataClaim>& claims) {
-    const auto start = Clock::now();
+    const auto start = ProofClock::now();
     TopologyProofRun r;
     r.topology = scene_.name;
     r.symbols = config_.names;
@@ -435,7 +435,7 @@ class TopologyProver {
     return *motion_;
   }
 
-  void prove_symbolically(const MechanismDataClaim& claim, TopologyProof& p, Clock::time_point start) {
+  void prove_symbolically(const MechanismDataClaim& claim, TopologyProof& p, ProofClock::time_point start) {
     const SymbolicMotion& m = motion();
     if (m.singular_everywhere) {
       p.verdict = ProofVerdict::Error;
@@ -448,7 +448,7 @@ class TopologyProver {
       p.error = "the velocity system is singular on every configuration whose axes are unit vectors (det A = 0 there)";
       return;
     }
-    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options_.seconds));
+    const auto deadline = start + std::chrono::duration_cast<ProofClock::duration>(std::chrono::duration<double>(options_.seconds));
     try {
       if (prove_for_free_rates(claim, p, m, deadline)) return;
     } catch (const proof_detail::NormalizerOutOfTime&) {
@@ -513,7 +513,7 @@ class TopologyProver {
   // the claim: zero for all rates, a rigid-body identity proved on every configuration (the
   // dead centres included: it holds for whatever rates the constraints admit there).
   bool prove_for_free_rates(const MechanismDataClaim& claim, TopologyProof& p, const SymbolicMotion& m,
-                            Clock::time_point deadline) {
+                            ProofClock::time_point deadline) {
     const MechanismFrameOf<ex> frame(scene_, m.free_rates, config_.joint_at, config_.point_at, config_.axis, true);
     const ClaimValues values = claim_values(claim, frame);
     RationalNormalizer normalizer(false);

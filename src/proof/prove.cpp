@@ -18,15 +18,15 @@ namespace linkproof {
 namespace {
 
 using GiNaC::ex;
-using Clock = std::chrono::steady_clock;
+using ProveClock = std::chrono::steady_clock;
 using namespace proof_detail;
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double prove_seconds_since(ProveClock::time_point t) { return std::chrono::duration<double>(ProveClock::now() - t).count(); }
 
 /// The per-n proof, with the sides named as `names` prints them in the exceptional set.
 PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std::vector<std::string>* not_local,
                    std::vector<ExceptionalSet>* except, const SideNames& names, bool general) {
-  const auto start = Clock::now();
+  const auto start = ProveClock::now();
   PerNProof r;
   r.n = n;
   const SymbolicPolygon sp = make_symbolic_polygon(n, names);
@@ -83,7 +83,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     divisors.insert(divisors.end(), claim_divisors.begin(), claim_divisors.end());
     *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr, normalizer);
   }
-  r.seconds = since(start);
+  r.seconds = prove_seconds_since(start);
   return r;
 }
 
@@ -150,7 +150,7 @@ PerNProof prove_for_n(GroundTruthEngine& engine, const DataClaim& claim, int n, 
 }
 
 ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const ProveOptions& o) {
-  const auto start = Clock::now();
+  const auto start = ProveClock::now();
   ProofResult r;
   r.id = claim.info.id;
   r.expected = claim.info.expected;
@@ -212,11 +212,11 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
       }
       // 3. Per-n proofs for the rest of the range while the budget lasts: a finite range is
       //    covered by them when the lift does not apply; otherwise they re-check it, if asked.
-      const auto ladder_start = Clock::now();
+      const auto ladder_start = ProveClock::now();
       for (int n = lo; !disproved && (!all_n || o.recheck_proved) && (hi == 0 || n <= hi); ++n) {
         if (std::find(r.proved_n.begin(), r.proved_n.end(), n) != r.proved_n.end()) continue;
         if (o.n_max && n > o.n_max) break;
-        if (since(ladder_start) > o.ladder_seconds) break;
+        if (prove_seconds_since(ladder_start) > o.ladder_seconds) break;
         prove_n(n, nullptr, numbered_side, false);
       }
       std::sort(r.proved_n.begin(), r.proved_n.end());
@@ -278,7 +278,7 @@ ProofResult prove_claim(GroundTruthEngine& engine, const DataClaim& claim, const
     r.verdict = ProofVerdict::Error;
     r.error = e.what();
   }
-  r.seconds = since(start);
+  r.seconds = prove_seconds_since(start);
   return r;
 }
 

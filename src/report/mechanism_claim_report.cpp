@@ -11,6 +11,8 @@ namespace linkproof {
 
 namespace {
 
+using nlohmann::json;
+
 bool is_exact(const TopologySampleRun& run) { return run.options.arithmetic == Arithmetic::Exact; }
 
 std::string rests_on(const TopologySampleRun& run) {
@@ -83,7 +85,6 @@ void write_text(std::ostream& out, const MechanismCounterexample& x) {
 }
 
 nlohmann::json sample_claim_json(const SampleResult& r, bool as_expected, const std::string& scope) {
-  using json = nlohmann::json;
   return {{"id", r.info.id},
           {"source", r.info.source},
           {"statement", r.info.statement},
@@ -101,7 +102,6 @@ nlohmann::json sample_claim_json(const SampleResult& r, bool as_expected, const 
 }
 
 nlohmann::json to_json(const TopologySampleRun& run, const ClaimsStatus& status) {
-  using json = nlohmann::json;
   json claims = json::array();
   int ok = 0;
   for (size_t k = 0; k < run.claims.size(); ++k) {

@@ -24,7 +24,7 @@ using GiNaC::ex;
 std::string latex_of(const ex& e) { return canonical_latex(e); }
 
 
-Point2 to_point(const Vec2<Rational>& p) { return {cln::double_approx(p.x), cln::double_approx(p.y)}; }
+Point2 polygon_point(const Vec2<Rational>& p) { return {cln::double_approx(p.x), cln::double_approx(p.y)}; }
 
 Rich defined_rich(const Defined<Vec2<Rational>>& d) {
   if (d.has_value()) return point_rich(d.get());
@@ -213,35 +213,35 @@ Drawing construction_drawing(const Polygon<Rational>& p, const std::vector<FourB
   const int n = p.n();
   Drawing d;
   for (int j = 1; j <= n; ++j) {
-    Segment side{to_point(p.joint(j)), to_point(p.joint(j + 1))};
+    Segment side{polygon_point(p.joint(j)), polygon_point(p.joint(j + 1))};
     if (j == n) side.color = "#888888", side.label = "fixed";
     d.segments.push_back(side);
   }
-  const Point2 kn2 = to_point(p.joint(n - 2)), kn1 = to_point(p.joint(n - 1)), kn = to_point(p.joint(n));
+  const Point2 kn2 = polygon_point(p.joint(n - 2)), kn1 = polygon_point(p.joint(n - 1)), kn = polygon_point(p.joint(n));
   for (const auto& c : cs) {
     const std::string col = palette_color(static_cast<size_t>(c.j));
     const std::string J = std::to_string(c.j);
-    const Point2 kp = to_point(c.k_prime);
+    const Point2 kp = polygon_point(c.k_prime);
     d.segments.push_back({kp, kn2, col, Stroke::Solid, true, ""});  // r_j moved to end in K_{n-2}
     d.markers.push_back({kp, "K'_" + J, col, false, false});
     if (c.q.has_value()) {
-      const Point2 q = to_point(c.q.get());
+      const Point2 q = polygon_point(c.q.get());
       d.segments.push_back({kn, q, col, Stroke::Dashed, false, ""});   // line K_n K'_j
       d.segments.push_back({kn1, q, col, Stroke::Dashed, false, ""});  // line K_{n-2} K_{n-1}
       d.markers.push_back({q, "Q_" + J, col, false, true});
       if (c.p_prime.has_value()) {
-        const Point2 pp = to_point(c.p_prime.get());
+        const Point2 pp = polygon_point(c.p_prime.get());
         d.angles.push_back({q, {kn1.x - q.x, kn1.y - q.y}, {pp.x - q.x, pp.y - q.y}, "beta_" + J, col});
       }
     }
     if (c.p_prime.has_value()) {
-      const Point2 pp = to_point(c.p_prime.get());
+      const Point2 pp = polygon_point(c.p_prime.get());
       d.segments.push_back({kn, pp, col, Stroke::Thin, false, ""});  // line K_{n-1} K_n
       d.segments.push_back({kp, pp, col, Stroke::Thin, false, ""});  // line K'_j K_{n-2}
       d.markers.push_back({pp, "P'_" + J, col, false, true});
     }
   }
-  for (int j = 1; j <= n; ++j) d.markers.push_back({to_point(p.joint(j)), "K_" + std::to_string(j), "#222222", true, false});
+  for (int j = 1; j <= n; ++j) d.markers.push_back({polygon_point(p.joint(j)), "K_" + std::to_string(j), "#222222", true, false});
   return d;
 }
 

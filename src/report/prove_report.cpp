@@ -122,8 +122,8 @@ void write_text(std::ostream& out, const std::vector<ProofResult>& results, cons
              status.strict ? " (strict: only proofs for the whole range count)" : "");
 }
 
-void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, const ClaimsStatus& status) {
-  if (json)
+void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool as_json, const ClaimsStatus& status) {
+  if (as_json)
     out << json_text(to_json(results, status)) << "\n";
   else
     write_text(out, results, status);

@@ -26,7 +26,7 @@ nlohmann::json to_json(const std::vector<ProofResult>& results, const ClaimsStat
 void write_text(std::ostream& out, const std::vector<ProofResult>& results, const ClaimsStatus& status);
 
 /// Prints the results as JSON or text: the one ending of `prove` and `check-claim`.
-void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool json, const ClaimsStatus& status);
+void report_proofs(std::ostream& out, const std::vector<ProofResult>& results, bool as_json, const ClaimsStatus& status);
 
 /// What the symbols of proofs mean.
 inline constexpr const char* kProofCoordinates =

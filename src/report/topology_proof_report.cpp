@@ -11,6 +11,8 @@ namespace linkproof {
 
 namespace {
 
+using nlohmann::json;
+
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
@@ -20,7 +22,6 @@ std::string joined(const std::vector<std::string>& items) {
 }  // namespace
 
 nlohmann::json to_json(const TopologyProofRun& run, const ClaimsStatus& status) {
-  using json = nlohmann::json;
   json claims = json::array();
   int ok = 0;
   for (size_t k = 0; k < run.claims.size(); ++k) {

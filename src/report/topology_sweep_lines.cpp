@@ -15,7 +15,7 @@ using nlohmann::json;
 
 namespace {
 
-std::string text(const json& j, const char* key, const std::string& file, const std::string& where) {
+std::string string_field(const json& j, const char* key, const std::string& file, const std::string& where) {
   return line_member(j, key, json::value_t::string, file, where).get<std::string>();
 }
 
@@ -64,14 +64,14 @@ TopologySweepLine parse_topology_line(const std::string& line, const std::string
     if (std::find(std::begin(kCaseKeys), std::end(kCaseKeys), key) == std::end(kCaseKeys))
       throw InputError(file, where + "." + key, "is not a field of a case line of a topology sweep");
   TopologySweepIdentity& id = out.identity;
-  id.topology = text(j, "topology", file, where);
-  id.scene_digest = text(j, "scene_digest", file, where);
-  id.claims_digest = text(j, "claims_digest", file, where);
+  id.topology = string_field(j, "topology", file, where);
+  id.scene_digest = string_field(j, "scene_digest", file, where);
+  id.claims_digest = string_field(j, "claims_digest", file, where);
   if (!j.contains("seed") || !j["seed"].is_number_unsigned())
     throw InputError(file, where + ".seed", "missing or not an unsigned integer");
   id.seed = j["seed"].get<std::uint64_t>();
   id.count = line_member(j, "count", json::value_t::number_integer, file, where).get<long>();
-  const auto arithmetic = parse_arithmetic(text(j, "arithmetic", file, where));
+  const auto arithmetic = parse_arithmetic(string_field(j, "arithmetic", file, where));
   if (!arithmetic) throw InputError(file, where + ".arithmetic", "unknown arithmetic " + j["arithmetic"].dump());
   id.arithmetic = *arithmetic;
   TopologySweepCase c;

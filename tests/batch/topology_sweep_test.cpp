@@ -27,16 +27,16 @@ std::vector<std::string> sweep_of(const std::string& count, const std::string& s
   a.insert(a.end(), extra.begin(), extra.end());
   return a;
 }
-std::vector<std::string> sweep_args(std::vector<std::string> extra) { return sweep_of("60", "3", std::move(extra)); }
+std::vector<std::string> topology_sweep_args(std::vector<std::string> extra) { return sweep_of("60", "3", std::move(extra)); }
 
 /// The reference: one plain single-process run, computed once.
-const Reference& reference() {
-  static const Reference r = reference_run("topology_sweep_reference", sweep_args({"--jobs", "1"}));
+const Reference& topology_reference() {
+  static const Reference r = reference_run("topology_sweep_reference", topology_sweep_args({"--jobs", "1"}));
   return r;
 }
 
 TEST(SweepTopology, ResultFileHasOneLineNamingItsSweepPerConfigurationThenASummary) {
-  std::istringstream in(reference().file);
+  std::istringstream in(topology_reference().file);
   std::string line;
   long cases = 0;
   nlohmann::json last;
@@ -56,17 +56,17 @@ TEST(SweepTopology, ResultFileHasOneLineNamingItsSweepPerConfigurationThenASumma
   EXPECT_EQ(last["summary"]["mode"], "topology_sweep");
   EXPECT_EQ(last["summary"]["configurations"]["generated"], 60) << "--count is the number of configurations drawn";
   EXPECT_FALSE(last["summary"].contains("seconds"));
-  EXPECT_EQ(nlohmann::json::parse(reference().json), last["summary"]) << "the summary is the report without seconds";
+  EXPECT_EQ(nlohmann::json::parse(topology_reference().json), last["summary"]) << "the summary is the report without seconds";
 }
 
 TEST(SweepTopology, SameReportWhateverTheJobs) {
   const std::string dir = fresh_dir("topology_sweep_jobs");
-  const auto two = run_cli(sweep_args({"--jobs", "2", "--out", dir + "/j2.jsonl", "--json"}));
+  const auto two = run_cli(topology_sweep_args({"--jobs", "2", "--out", dir + "/j2.jsonl", "--json"}));
   ASSERT_EQ(two.code, 0) << two.err;
-  EXPECT_EQ(read_file(dir + "/j2.jsonl"), reference().file);
-  EXPECT_EQ(without_seconds(two.out), reference().json);
-  const auto text1 = run_cli(sweep_args({"--jobs", "1"}));
-  const auto text2 = run_cli(sweep_args({"--jobs", "2"}));
+  EXPECT_EQ(read_file(dir + "/j2.jsonl"), topology_reference().file);
+  EXPECT_EQ(without_seconds(two.out), topology_reference().json);
+  const auto text1 = run_cli(topology_sweep_args({"--jobs", "1"}));
+  const auto text2 = run_cli(topology_sweep_args({"--jobs", "2"}));
   auto strip_time = [](std::string s) { return s.substr(s.find("rests on:")); };  // line 2 has the seconds
   EXPECT_EQ(strip_time(text1.out), strip_time(text2.out));
   EXPECT_NE(text1.out.find("--count is the number of configurations drawn"), std::string::npos) << text1.out;
@@ -77,7 +77,7 @@ TEST(SweepTopology, ShardsMergedEqualTheWholeRun) {
   std::vector<std::string> files;
   for (const char* shard : {"3/3", "1/3", "2/3"}) {
     const std::string f = dir + "/s" + std::string(1, shard[0]) + ".jsonl";
-    const auto run = run_cli(sweep_args({"--jobs", "2", "--shard", shard, "--out", f}));
+    const auto run = run_cli(topology_sweep_args({"--jobs", "2", "--shard", shard, "--out", f}));
     ASSERT_EQ(run.code, 0) << shard << ": " << run.err;
     files.push_back(f);
   }
@@ -86,8 +86,8 @@ TEST(SweepTopology, ShardsMergedEqualTheWholeRun) {
   merge.insert(merge.end(), files.begin(), files.end());
   const auto merged = run_cli(merge);
   ASSERT_EQ(merged.code, 0) << merged.err;
-  EXPECT_EQ(read_file(dir + "/merged.jsonl"), reference().file);
-  EXPECT_EQ(without_seconds(merged.out), reference().json);
+  EXPECT_EQ(read_file(dir + "/merged.jsonl"), topology_reference().file);
+  EXPECT_EQ(without_seconds(merged.out), topology_reference().json);
   // Without --topology and --claims, merge says what it needs.
   std::vector<std::string> bare = {"merge", "--out", dir + "/bare.jsonl"};
   bare.insert(bare.end(), files.begin(), files.end());
@@ -99,25 +99,25 @@ TEST(SweepTopology, ShardsMergedEqualTheWholeRun) {
 TEST(SweepTopology, ResumeAfterAKilledRunGivesTheSameReport) {
   // SIGKILL in the middle of a write leaves complete lines and a partial last one: resume cuts
   // it and continues (the cut is made here, so the test does not race a fast run).
-  const std::string& ref = reference().file;
+  const std::string& ref = topology_reference().file;
   for (const char* jobs : {"1", "2"}) {
     const std::string dir = fresh_dir(std::string("topology_sweep_cut") + jobs);
     size_t cut = 0;
     for (int i = 0; i < 17; ++i) cut = ref.find('\n', cut) + 1;
     cut += 50;  // into the 18th line
     std::ofstream(dir + "/r.jsonl", std::ios::binary) << ref.substr(0, cut);
-    const auto run = run_cli(sweep_args({"--jobs", jobs, "--out", dir + "/r.jsonl", "--resume", "--json"}));
+    const auto run = run_cli(topology_sweep_args({"--jobs", jobs, "--out", dir + "/r.jsonl", "--resume", "--json"}));
     ASSERT_EQ(run.code, 0) << run.err;
     EXPECT_EQ(read_file(dir + "/r.jsonl"), ref) << "jobs " << jobs;
-    EXPECT_EQ(without_seconds(run.out), reference().json) << "jobs " << jobs;
+    EXPECT_EQ(without_seconds(run.out), topology_reference().json) << "jobs " << jobs;
   }
   // A complete file is left as it is, and its report printed.
   const std::string dir = fresh_dir("topology_sweep_complete");
   std::ofstream(dir + "/r.jsonl", std::ios::binary) << ref;
-  const auto again = run_cli(sweep_args({"--out", dir + "/r.jsonl", "--resume", "--json"}));
+  const auto again = run_cli(topology_sweep_args({"--out", dir + "/r.jsonl", "--resume", "--json"}));
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_EQ(read_file(dir + "/r.jsonl"), ref);
-  EXPECT_EQ(without_seconds(again.out), reference().json);
+  EXPECT_EQ(without_seconds(again.out), topology_reference().json);
 }
 
 TEST(SweepTopology, ResumeAfterSigkillOfALongerRunGivesTheBytesOfOneRun) {
@@ -138,7 +138,7 @@ TEST(SweepTopology, ResumeAfterSigkillOfALongerRunGivesTheBytesOfOneRun) {
 }
 
 TEST(SweepTopology, AWrongClaimIsDisprovedWithTheSameShrunkSceneAsCheckClaim) {
-  const auto sweep = nlohmann::json::parse(reference().json);
+  const auto sweep = nlohmann::json::parse(topology_reference().json);
   const auto check = run_cli({"check-claim", kFourbarClaims, "--topology", kFourbar, "--count", "60", "--seed", "3",
                               "--json"});
   ASSERT_EQ(check.code, 0) << check.err;
@@ -169,11 +169,11 @@ std::map<std::string, std::string> scene_files(const std::string& dir) {
 
 TEST(SweepTopology, ScenesWritesEachDisprovedClaimsCounterexampleAsASceneCheckClaimRefails) {
   const std::string dir = fresh_dir("topology_sweep_scenes");
-  const auto run = run_cli(sweep_args({"--jobs", "2", "--scenes", dir + "/scenes", "--json"}));
+  const auto run = run_cli(topology_sweep_args({"--jobs", "2", "--scenes", dir + "/scenes", "--json"}));
   ASSERT_EQ(run.code, 0) << run.err;
-  EXPECT_EQ(without_seconds(run.out), reference().json) << "--scenes changes nothing in the report";
+  EXPECT_EQ(without_seconds(run.out), topology_reference().json) << "--scenes changes nothing in the report";
   const auto files = scene_files(dir + "/scenes");
-  const auto report = nlohmann::json::parse(reference().json);
+  const auto report = nlohmann::json::parse(topology_reference().json);
   size_t disproved = 0;
   for (const auto& c : report["claims"]) {
     if (c["verdict"] != "disproved") continue;
@@ -195,24 +195,24 @@ TEST(SweepTopology, ScenesWritesEachDisprovedClaimsCounterexampleAsASceneCheckCl
 
 TEST(SweepTopology, MergeScenesWritesTheScenesOfTheWholeRun) {
   const std::string dir = fresh_dir("topology_sweep_merge_scenes");
-  ASSERT_EQ(run_cli(sweep_args({"--jobs", "1", "--scenes", dir + "/whole"})).code, 0);
+  ASSERT_EQ(run_cli(topology_sweep_args({"--jobs", "1", "--scenes", dir + "/whole"})).code, 0);
   std::vector<std::string> merge = {"merge", "--topology", kFourbar, "--claims", kFourbarClaims, "--out",
                                     dir + "/merged.jsonl", "--scenes", dir + "/merged"};
   for (const char* shard : {"1/2", "2/2"}) {
     const std::string f = dir + "/s" + std::string(1, shard[0]) + ".jsonl";
-    ASSERT_EQ(run_cli(sweep_args({"--jobs", "1", "--shard", shard, "--out", f})).code, 0) << shard;
+    ASSERT_EQ(run_cli(topology_sweep_args({"--jobs", "1", "--shard", shard, "--out", f})).code, 0) << shard;
     merge.push_back(f);
   }
   const auto merged = run_cli(merge);
   ASSERT_EQ(merged.code, 0) << merged.err;
-  EXPECT_EQ(read_file(dir + "/merged.jsonl"), reference().file);
+  EXPECT_EQ(read_file(dir + "/merged.jsonl"), topology_reference().file);
   EXPECT_EQ(scene_files(dir + "/merged"), scene_files(dir + "/whole"));
   EXPECT_FALSE(scene_files(dir + "/whole").empty());
 }
 
 TEST(SweepTopology, TrueFourBarClaimsHoldOnSamplesInDoubleAndExact) {
   for (const std::string arith : {"exact", "double"}) {
-    const auto run = run_cli(sweep_args({"--arith", arith, "--jobs", "1", "--json"}));
+    const auto run = run_cli(topology_sweep_args({"--arith", arith, "--jobs", "1", "--json"}));
     ASSERT_EQ(run.code, 0) << arith << ": " << run.err;
     const auto j = nlohmann::json::parse(run.out);
     EXPECT_EQ(j["arithmetic"], arith);
@@ -232,7 +232,7 @@ TEST(SweepTopology, TrueFourBarClaimsHoldOnSamplesInDoubleAndExact) {
 
 TEST(SweepTopology, RefusesAResultFileOfAnotherSweep) {
   const std::string dir = fresh_dir("topology_sweep_other");
-  const std::string& ref = reference().file;
+  const std::string& ref = topology_reference().file;
   const std::string first_lines = ref.substr(0, ref.find('\n', ref.find('\n') + 1) + 1);
   const auto refused = [&](std::vector<std::string> args, const std::string& field) {
     std::ofstream(dir + "/r.jsonl", std::ios::binary) << first_lines;
@@ -246,8 +246,8 @@ TEST(SweepTopology, RefusesAResultFileOfAnotherSweep) {
   };
   refused(sweep_of("60", "4", {}), "seed");
   refused(sweep_of("61", "3", {}), "count");
-  refused(sweep_args({"--arith", "double"}), "arithmetic");
-  refused(sweep_args({"--shard", "2/2"}), "case");
+  refused(topology_sweep_args({"--arith", "double"}), "arithmetic");
+  refused(topology_sweep_args({"--shard", "2/2"}), "case");
   // Other claims on the same scene: the claim file's digest differs.
   const std::string claims = dir + "/claims.yaml";
   std::ofstream(claims) << read_file(kFourbarClaims) << "# edited\n";
@@ -255,7 +255,7 @@ TEST(SweepTopology, RefusesAResultFileOfAnotherSweep) {
   // A polygon sweep's file.
   const auto polygon = run_cli({"sweep", "--n", "4", "--count", "2", "--jobs", "1", "--out", dir + "/p.jsonl"});
   ASSERT_EQ(polygon.code, 0) << polygon.err;
-  auto run = run_cli(sweep_args({"--out", dir + "/p.jsonl", "--resume"}));
+  auto run = run_cli(topology_sweep_args({"--out", dir + "/p.jsonl", "--resume"}));
   EXPECT_EQ(run.code, 2) << run.err;
   EXPECT_NE(run.err.find(dir + "/p.jsonl"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("line 1"), std::string::npos) << run.err;
@@ -265,14 +265,14 @@ TEST(SweepTopology, BadOptionsNameTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"sweep", "--topology", kFourbar, "--count", "5"}, "--claims"},
       {{"sweep", "--claims", kFourbarClaims, "--count", "5"}, "--topology"},
-      {sweep_args({"--n", "4..6"}), "--n"},
-      {sweep_args({"--arith", "quad"}), "--arith"},
+      {topology_sweep_args({"--n", "4..6"}), "--n"},
+      {topology_sweep_args({"--arith", "quad"}), "--arith"},
       {sweep_of("0", "3", {}), "--count"},
-      {sweep_args({"--index", "2"}), "--index"},
-      {sweep_args({"--scenes", kFourbar + "/scenes"}), "--scenes"},  // under a regular file: cannot be made
-      {sweep_args({"--shard", "4/3"}), "--shard"},
-      {sweep_args({"--jobs", "0"}), "--jobs"},
-      {sweep_args({"--resume"}), "--resume"},
+      {topology_sweep_args({"--index", "2"}), "--index"},
+      {topology_sweep_args({"--scenes", kFourbar + "/scenes"}), "--scenes"},  // under a regular file: cannot be made
+      {topology_sweep_args({"--shard", "4/3"}), "--shard"},
+      {topology_sweep_args({"--jobs", "0"}), "--jobs"},
+      {topology_sweep_args({"--resume"}), "--resume"},
       {{"sweep", "--topology", kFourbar, "--claims", source("verify/claims/wrong_variants.yaml"), "--count", "5"},
        "wrong_variants.yaml"},
       {{"sweep", "--topology", source("verify/scenes/pentagon.yaml"), "--claims", kFourbarClaims, "--count", "5"},

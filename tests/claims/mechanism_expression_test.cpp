@@ -14,7 +14,7 @@ MechanismExpression parse(const std::string& text) {
 }
 
 // The InputError of parsing `text`: its source ("c.yaml:1:COLUMN") and problem.
-std::pair<std::string, std::string> error_of(const std::string& text) {
+std::pair<std::string, std::string> expression_error(const std::string& text) {
   try {
     parse(text);
   } catch (const InputError& e) {
@@ -43,26 +43,26 @@ TEST(MechanismExpression, NamesAreArgumentsBareOrQuoted) {
 }
 
 TEST(MechanismExpression, ErrorsNameLineAndColumn) {
-  EXPECT_EQ(error_of("omega(a) + spin(b)").first, "c.yaml:1:12");
-  EXPECT_NE(error_of("omega(a) + spin(b)").second.find("unknown word 'spin'"), std::string::npos);
-  const auto arity = error_of("omega(a, b, c)");
+  EXPECT_EQ(expression_error("omega(a) + spin(b)").first, "c.yaml:1:12");
+  EXPECT_NE(expression_error("omega(a) + spin(b)").second.find("unknown word 'spin'"), std::string::npos);
+  const auto arity = expression_error("omega(a, b, c)");
   EXPECT_EQ(arity.first, "c.yaml:1:1");
   EXPECT_NE(arity.second.find("it takes omega(L), omega(L, M)"), std::string::npos) << arity.second;
-  const auto vector_as_number = error_of("omega(a) + pos(P)");
+  const auto vector_as_number = expression_error("omega(a) + pos(P)");
   EXPECT_EQ(vector_as_number.first, "c.yaml:1:10");
-  const auto dot_arg = error_of("dot(omega(a), pos(P))");
+  const auto dot_arg = expression_error("dot(omega(a), pos(P))");
   EXPECT_EQ(dot_arg.first, "c.yaml:1:5");
   EXPECT_NE(dot_arg.second.find("a number where a vector is expected"), std::string::npos) << dot_arg.second;
-  EXPECT_NE(error_of("norm2(pos(P))*pos(P) / pos(Q)").second.find("a vector where a number is expected"),
+  EXPECT_NE(expression_error("norm2(pos(P))*pos(P) / pos(Q)").second.find("a vector where a number is expected"),
             std::string::npos);
-  EXPECT_NE(error_of("pos(P)*pos(Q)").second.find("dot(a, b) or cross(a, b)"), std::string::npos);
-  EXPECT_NE(error_of("norm2(P)").second.find("'P' is a name"), std::string::npos);
-  EXPECT_NE(error_of("omega(pos(P))").second.find("a link name"), std::string::npos);
-  EXPECT_NE(error_of("omega(a) + 0.5").second.find("decimal"), std::string::npos);
-  EXPECT_NE(error_of("pos(P)^2").second.find("a power of a vector"), std::string::npos);
-  EXPECT_NE(error_of("omega(\"3)").second.find("never closed"), std::string::npos);
-  EXPECT_NE(error_of("omega(a) omega(b)").second.find("an operator is missing"), std::string::npos);
-  EXPECT_NE(error_of("coupler").second.find("unknown word 'coupler'"), std::string::npos);
+  EXPECT_NE(expression_error("pos(P)*pos(Q)").second.find("dot(a, b) or cross(a, b)"), std::string::npos);
+  EXPECT_NE(expression_error("norm2(P)").second.find("'P' is a name"), std::string::npos);
+  EXPECT_NE(expression_error("omega(pos(P))").second.find("a link name"), std::string::npos);
+  EXPECT_NE(expression_error("omega(a) + 0.5").second.find("decimal"), std::string::npos);
+  EXPECT_NE(expression_error("pos(P)^2").second.find("a power of a vector"), std::string::npos);
+  EXPECT_NE(expression_error("omega(\"3)").second.find("never closed"), std::string::npos);
+  EXPECT_NE(expression_error("omega(a) omega(b)").second.find("an operator is missing"), std::string::npos);
+  EXPECT_NE(expression_error("coupler").second.find("unknown word 'coupler'"), std::string::npos);
 }
 
 TEST(MechanismVocabulary, EveryWordHasASignatureAndMeaning) {

@@ -19,7 +19,7 @@ using test::run_cli;
 
 std::string scene(const std::string& name) { return std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/" + name; }
 
-std::string write_temp(const std::string& name, const std::string& text) {
+std::string cli_write_temp(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + name;
   std::ofstream(path) << text;
   return path;
@@ -146,7 +146,7 @@ TEST(Cli, SweepAndCheckClaimTakeTheMultiprecisionArithmetics) {
   EXPECT_EQ(j["arithmetic"], "mp1000");
   EXPECT_EQ(j["summary"]["unexpected_failures"], 0);
   // Without --scene: the proof is symbolic whatever the arithmetic.
-  const std::string mine = write_temp("mine_eq5.yaml", R"yaml(claims:
+  const std::string mine = cli_write_temp("mine_eq5.yaml", R"yaml(claims:
   - id: mine.eq5
     source: "test"
     statement: "eq. (5)"
@@ -186,7 +186,7 @@ TEST(Cli, MissingSceneFileIsBadInputNamingTheFile) {
 }
 
 TEST(Cli, MalformedSceneIsBadInputNamingTheField) {
-  const std::string path = write_temp("bad_scene.yaml",
+  const std::string path = cli_write_temp("bad_scene.yaml",
                                       "name: bad\npolygon:\n  joints: [[0,0],[1,0],[1,1],[0,1]]\n  omega: [1, 2]\n  omega_dot: [0]\n");
   const CliRun r = run_cli({"check", path});
   EXPECT_EQ(r.code, 2);
@@ -212,7 +212,7 @@ TEST(Cli, CheckStrictOnAMechanismSceneCountsAnUndefinedTrueClaim) {
   const std::string point = "at: [9, 14]";  // P, moved to the pole (11, 44/3) of the coupler
   ASSERT_NE(yaml.find(point), std::string::npos);
   yaml.replace(yaml.find(point), point.size(), "at: [11, 44/3]");
-  const std::string path = write_temp("strict_pole.yaml", yaml);
+  const std::string path = cli_write_temp("strict_pole.yaml", yaml);
   const CliRun plain = run_cli({"check", path});
   EXPECT_EQ(plain.code, 0) << plain.out;
   EXPECT_NE(plain.out.find("undefined"), std::string::npos);

@@ -14,7 +14,7 @@ namespace {
 using nlohmann::json;
 using test::run_cli;
 
-std::string scene(const std::string& name) {
+std::string curvature_scene(const std::string& name) {
   return std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/mechanisms/" + name;
 }
 
@@ -34,7 +34,7 @@ const json& claim(const json& j, const std::string& id) {
 
 // Issue 27: decimals beside the exact values, in the JSON (additive) and the text.
 TEST(CurvatureCli, PolesAndCentresHaveTheirDecimalsBesideTheExactValues) {
-  const json j = run_json({"curvature", scene("seed001_fourbar_curvature.yaml"), "--json"});
+  const json j = run_json({"curvature", curvature_scene("seed001_fourbar_curvature.yaml"), "--json"});
   const json& c = j["curvature_centres"][0];
   EXPECT_EQ(c["at"], json::array({"10923/1222", "17083/1222"}));
   EXPECT_EQ(c["at_decimal"], json::array({"8.938625205", "13.97954173"}));
@@ -45,13 +45,13 @@ TEST(CurvatureCli, PolesAndCentresHaveTheirDecimalsBesideTheExactValues) {
       EXPECT_EQ(p["at_decimal"], json::array({"11", "14.66666667"}));
     }
   }
-  const auto r = run_cli({"curvature", scene("seed001_fourbar_curvature.yaml")});
+  const auto r = run_cli({"curvature", curvature_scene("seed001_fourbar_curvature.yaml")});
   EXPECT_NE(r.out.find("P_1,3      (11, 44/3 ≈ 14.66666667)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("radius sqrt(3125/746642) ≈ 0.06469471482"), std::string::npos) << r.out;
 }
 
 TEST(CurvatureCli, Seed001CouplerPointCentreByTheAnalyticRouteAndByBobillier) {
-  const json j = run_json({"curvature", scene("seed001_fourbar_curvature.yaml"), "--json"});
+  const json j = run_json({"curvature", curvature_scene("seed001_fourbar_curvature.yaml"), "--json"});
   const json& c = j["curvature_centres"][0];
   EXPECT_EQ(c["point"], "P");
   EXPECT_EQ(c["at"], json::array({"10923/1222", "17083/1222"}));
@@ -67,7 +67,7 @@ TEST(CurvatureCli, Seed001CouplerPointCentreByTheAnalyticRouteAndByBobillier) {
 }
 
 TEST(CurvatureCli, EightBarGivesEveryClaimItsExpectedVerdict) {
-  const json j = run_json({"curvature", scene("dijksman1984_eightbar.yaml"), "--json"});
+  const json j = run_json({"curvature", curvature_scene("dijksman1984_eightbar.yaml"), "--json"});
   EXPECT_EQ(j["poles"].size(), 28u);
   for (const auto& c : j["claims"]) {
     EXPECT_EQ(c["verdict"], c["expected"]) << c["id"];
@@ -88,7 +88,7 @@ TEST(CurvatureCli, EightBarGivesEveryClaimItsExpectedVerdict) {
 }
 
 TEST(CurvatureCli, FirstOrderEightBarKeepsVelocitiesNotAccelerations) {
-  const json j = run_json({"curvature", scene("dijksman1984_eightbar_first_order.yaml"), "--json"});
+  const json j = run_json({"curvature", curvature_scene("dijksman1984_eightbar_first_order.yaml"), "--json"});
   ASSERT_EQ(j["reductions"].size(), 4u);
   EXPECT_TRUE(j["reductions"][0]["velocities_preserved"].get<bool>());
   EXPECT_FALSE(j["reductions"][0]["accelerations_preserved"].get<bool>());
@@ -98,9 +98,9 @@ TEST(CurvatureCli, FirstOrderEightBarKeepsVelocitiesNotAccelerations) {
 }
 
 TEST(CurvatureCli, CheckRunsTheSameWorkWhenTheSceneAsks) {
-  const json j = run_json({"check", scene("dijksman1984_eightbar.yaml"), "--json"});
+  const json j = run_json({"check", curvature_scene("dijksman1984_eightbar.yaml"), "--json"});
   EXPECT_TRUE(j.contains("links"));  // the mechanism check's keys stay
-  const json c = run_json({"curvature", scene("dijksman1984_eightbar.yaml"), "--json"});
+  const json c = run_json({"curvature", curvature_scene("dijksman1984_eightbar.yaml"), "--json"});
   EXPECT_EQ(j["poles"], c["poles"]);
   EXPECT_EQ(j["curvature_centres"], c["curvature_centres"]);
   EXPECT_EQ(j["reductions"], c["reductions"]);
@@ -110,7 +110,7 @@ TEST(CurvatureCli, CheckRunsTheSameWorkWhenTheSceneAsks) {
 
 // The bundled seed-001 four-bar with `extra` appended (top-level keys).
 std::string write_scene(const std::string& name, const std::string& extra) {
-  std::ifstream in(scene("seed001_fourbar.yaml"));
+  std::ifstream in(curvature_scene("seed001_fourbar.yaml"));
   std::stringstream text;
   text << in.rdbuf();
   const std::string path = ::testing::TempDir() + name;

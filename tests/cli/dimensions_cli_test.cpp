@@ -65,8 +65,8 @@ TEST(DimensionsCli, ASceneOfGivenPositionsSaysNothingInTextAndAllExactInJson) {
   ASSERT_EQ(text.code, 0) << text.err;
   EXPECT_EQ(text.out.find("rationalised"), std::string::npos) << text.out;
   EXPECT_EQ(text.out.rfind("scene ", 0), 0u) << text.out;
-  const test::CliRun json = test::run_cli({"check", bundled("seed001_fourbar.yaml"), "--json"});
-  const auto j = nlohmann::json::parse(json.out);
+  const test::CliRun json_run = test::run_cli({"check", bundled("seed001_fourbar.yaml"), "--json"});
+  const auto j = nlohmann::json::parse(json_run.out);
   EXPECT_TRUE(j["rationalised"].is_null());
   EXPECT_EQ(j["positions"]["B"]["exact"], true);
   EXPECT_TRUE(j["input_rates"].empty());

@@ -16,10 +16,10 @@ namespace {
 using test::CliRun;
 using test::run_cli;
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+std::string sampling_arith_source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
-const std::string kFourbarClaims = source("verify/claims/mechanisms/fourbar.yaml");
-const std::string kFourbar = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+const std::string kFourbarClaims = sampling_arith_source("verify/claims/mechanisms/fourbar.yaml");
+const std::string kFourbar = sampling_arith_source("verify/scenes/mechanisms/seed001_fourbar.yaml");
 
 nlohmann::json sample_json(const std::string& claims, const std::string& scene, const std::string& arith, int count,
                            int expected_code = 0) {
@@ -65,7 +65,7 @@ TEST(TopologySamplingArith, TheSameSeedFindsTheSameCounterexampleInDoubleAsExact
 // A closed velocity polygon (a sum of terms = the zero vector): its sides are exactly 0, so the
 // bound is judged against the terms' magnitude, not against 0 (where no bound could confirm it).
 TEST(TopologySamplingArith, AClaimWhoseSidesAreZeroHoldsToTheAccuracyOfItsTerms) {
-  const nlohmann::json j = sample_json(source("verify/claims/mechanisms/fourbar_acceleration_polygon.yaml"), kFourbar,
+  const nlohmann::json j = sample_json(sampling_arith_source("verify/claims/mechanisms/fourbar_acceleration_polygon.yaml"), kFourbar,
                                        "double", 20);
   for (const auto& c : j["claims"])
     if (c["id"] == "seed001.velocity_polygon") {

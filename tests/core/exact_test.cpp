@@ -13,42 +13,42 @@
 namespace linkproof {
 namespace {
 
-Rational q(long p, long d) { return Rational(cln::cl_I(p)) / cln::cl_I(d); }
+Rational exact_q(long p, long d) { return Rational(cln::cl_I(p)) / cln::cl_I(d); }
 
 TEST(ParseRational, ReadsIntegers) {
-  EXPECT_EQ(parse_rational("0"), q(0, 1));
-  EXPECT_EQ(parse_rational("42"), q(42, 1));
+  EXPECT_EQ(parse_rational("0"), exact_q(0, 1));
+  EXPECT_EQ(parse_rational("42"), exact_q(42, 1));
   EXPECT_EQ(parse_rational("123456789012345678901234567890"),
             Rational(cln::cl_I("123456789012345678901234567890")));
 }
 
 TEST(ParseRational, ReadsSigns) {
-  EXPECT_EQ(parse_rational("-12"), q(-12, 1));
-  EXPECT_EQ(parse_rational("+7"), q(7, 1));
-  EXPECT_EQ(parse_rational("-7/3"), q(-7, 3));
-  EXPECT_EQ(parse_rational("-0"), q(0, 1));
+  EXPECT_EQ(parse_rational("-12"), exact_q(-12, 1));
+  EXPECT_EQ(parse_rational("+7"), exact_q(7, 1));
+  EXPECT_EQ(parse_rational("-7/3"), exact_q(-7, 3));
+  EXPECT_EQ(parse_rational("-0"), exact_q(0, 1));
 }
 
 TEST(ParseRational, ReadsFractionsReduced) {
-  EXPECT_EQ(parse_rational("6/4"), q(3, 2));
-  EXPECT_EQ(parse_rational("4/2"), q(2, 1));
-  EXPECT_EQ(parse_rational("1/3"), q(1, 3));
+  EXPECT_EQ(parse_rational("6/4"), exact_q(3, 2));
+  EXPECT_EQ(parse_rational("4/2"), exact_q(2, 1));
+  EXPECT_EQ(parse_rational("1/3"), exact_q(1, 3));
 }
 
 TEST(ParseRational, ReadsDecimalAsExactDecimalFraction) {
-  EXPECT_EQ(parse_rational("0.1"), q(1, 10));
-  EXPECT_EQ(parse_rational("-2.50"), q(-5, 2));
-  EXPECT_EQ(parse_rational(".5"), q(1, 2));
-  EXPECT_EQ(parse_rational("5."), q(5, 1));
+  EXPECT_EQ(parse_rational("0.1"), exact_q(1, 10));
+  EXPECT_EQ(parse_rational("-2.50"), exact_q(-5, 2));
+  EXPECT_EQ(parse_rational(".5"), exact_q(1, 2));
+  EXPECT_EQ(parse_rational("5."), exact_q(5, 1));
 }
 
 TEST(ParseRational, ReadsExponentsExactly) {
-  EXPECT_EQ(parse_rational("1e3"), q(1000, 1));
-  EXPECT_EQ(parse_rational("2.5e-3"), q(1, 400));
-  EXPECT_EQ(parse_rational("1E+2"), q(100, 1));
+  EXPECT_EQ(parse_rational("1e3"), exact_q(1000, 1));
+  EXPECT_EQ(parse_rational("2.5e-3"), exact_q(1, 400));
+  EXPECT_EQ(parse_rational("1E+2"), exact_q(100, 1));
 }
 
-TEST(ParseRational, IgnoresSurroundingWhitespace) { EXPECT_EQ(parse_rational(" 3/4 "), q(3, 4)); }
+TEST(ParseRational, IgnoresSurroundingWhitespace) { EXPECT_EQ(parse_rational(" 3/4 "), exact_q(3, 4)); }
 
 TEST(ParseRational, RejectsTextThatIsNotAnExactNumber) {
   for (const char* bad : {"", "   ", "abc", "1/0", "nan", "NaN", ".nan", "inf", "-inf", ".inf",
@@ -77,16 +77,16 @@ TEST(ParseRational, ExplainsExponentOutOfRange) {
 }
 
 TEST(FormatRational, PrintsReducedFraction) {
-  EXPECT_EQ(format_rational(q(6, 4)), "3/2");
-  EXPECT_EQ(format_rational(q(-7, 3)), "-7/3");
+  EXPECT_EQ(format_rational(exact_q(6, 4)), "3/2");
+  EXPECT_EQ(format_rational(exact_q(-7, 3)), "-7/3");
   EXPECT_EQ(format_rational(parse_rational("6/4")), "3/2");
 }
 
 TEST(FormatRational, PrintsIntegersWithoutDenominator) {
-  EXPECT_EQ(format_rational(q(4, 2)), "2");
+  EXPECT_EQ(format_rational(exact_q(4, 2)), "2");
   EXPECT_EQ(format_rational(parse_rational("4/2")), "2");
-  EXPECT_EQ(format_rational(q(0, 5)), "0");
-  EXPECT_EQ(format_rational(q(-3, 1)), "-3");
+  EXPECT_EQ(format_rational(exact_q(0, 5)), "0");
+  EXPECT_EQ(format_rational(exact_q(-3, 1)), "-3");
 }
 
 TEST(FormatRational, PrintsDecimalInputAsExactFraction) {

@@ -20,11 +20,11 @@ namespace {
 
 template <class F>
 Rational exact(F x) { return exact_value_of(x); }
-Rational two_to(long k) { return k >= 0 ? Rational(cln::ash(cln::cl_I(1), k)) : 1 / Rational(cln::ash(cln::cl_I(1), -k)); }
+Rational worst_case_two_to(long k) { return k >= 0 ? Rational(cln::ash(cln::cl_I(1), k)) : 1 / Rational(cln::ash(cln::cl_I(1), -k)); }
 
 /// |exact - v| <= e, decided exactly (an unbounded radius encloses everything).
 template <class F>
-bool encloses(const Tracked<F>& t, const Rational& x) {
+bool worst_case_encloses(const Tracked<F>& t, const Rational& x) {
   if (TrackedTraits<F>::is_unbounded(t.e)) return true;
   return cln::abs(x - exact(t.v)) <= exact(t.e);
 }
@@ -37,7 +37,7 @@ TEST(TrackedWorstCase, QuotientAtTheEdgeOfBothIntervalsIsEnclosed) {
   const Tracked<double> a{0x1.ab9818609594dp+0, 0x1.49c1df05090a9p-3};
   const Tracked<double> b{0x1.8d2726ce9808p+0, 0x1.dcf9fa917028ap-2};
   const Rational edge = (exact(a.v) + exact(a.e)) / (exact(b.v) - exact(b.e));
-  EXPECT_TRUE(encloses(a / b, edge)) << "radius " << format_float((a / b).e);
+  EXPECT_TRUE(worst_case_encloses(a / b, edge)) << "radius " << format_float((a / b).e);
 }
 
 // The same edges for every operation, over many random intervals: the radius is never below
@@ -52,11 +52,11 @@ void check_edges(std::uint64_t seed) {
     const F eb = std::ldexp(static_cast<F>(unit(g)), -static_cast<int>(g() % 6));
     const Tracked<F> a{va, ea}, b{vb, eb};
     const Rational hi_a = exact(va) + exact(ea), hi_b = exact(vb) + exact(eb), lo_b = exact(vb) - exact(eb);
-    ASSERT_TRUE(encloses(a + b, hi_a + hi_b)) << "seed " << seed << " trial " << trial;
-    ASSERT_TRUE(encloses(a - b, hi_a - lo_b)) << "seed " << seed << " trial " << trial;
-    ASSERT_TRUE(encloses(a * b, hi_a * hi_b)) << "seed " << seed << " trial " << trial;
+    ASSERT_TRUE(worst_case_encloses(a + b, hi_a + hi_b)) << "seed " << seed << " trial " << trial;
+    ASSERT_TRUE(worst_case_encloses(a - b, hi_a - lo_b)) << "seed " << seed << " trial " << trial;
+    ASSERT_TRUE(worst_case_encloses(a * b, hi_a * hi_b)) << "seed " << seed << " trial " << trial;
     if (lo_b > 0) {
-      ASSERT_TRUE(encloses(a / b, hi_a / lo_b)) << "seed " << seed << " trial " << trial;
+      ASSERT_TRUE(worst_case_encloses(a / b, hi_a / lo_b)) << "seed " << seed << " trial " << trial;
     }
   }
 }
@@ -67,22 +67,22 @@ TEST(TrackedWorstCase, EdgesOfTheOperandIntervalsAreEnclosedInLongDouble) { chec
 // radius of 2^-16445 for a value of 2^-1100 / 3.
 TEST(TrackedWorstCase, LongDoubleInputsOutsideDoublesRangeAreConvertedCorrectly) {
   using T = Tracked<long double>;
-  for (const Rational& q : {two_to(-1100) / 3, -two_to(-16440) / 7, two_to(1100) * 5 / 3, two_to(-16445)}) {
+  for (const Rational& q : {worst_case_two_to(-1100) / 3, -worst_case_two_to(-16440) / 7, worst_case_two_to(1100) * 5 / 3, worst_case_two_to(-16445)}) {
     const T t = ScalarTraits<T>::from_rational(q);
-    EXPECT_TRUE(encloses(t, q)) << format_rational(q);
+    EXPECT_TRUE(worst_case_encloses(t, q)) << format_rational(q);
     EXPECT_FALSE(TrackedTraits<long double>::is_unbounded(t.e));
-    EXPECT_LE(exact(t.e), cln::abs(q) * two_to(-63) + two_to(-16445)) << "not tight: " << format_rational(q);
+    EXPECT_LE(exact(t.e), cln::abs(q) * worst_case_two_to(-63) + worst_case_two_to(-16445)) << "not tight: " << format_rational(q);
   }
 }
 
 // Cancellation: (x + y) - x with y far below x's ulp loses y entirely; the radius still covers y.
 TEST(TrackedWorstCase, CancellationThatLosesEveryDigitIsEnclosed) {
   using T = Tracked<double>;
-  const Rational x = Rational(1) / 3, y = two_to(-80) / 7;
+  const Rational x = Rational(1) / 3, y = worst_case_two_to(-80) / 7;
   const T tx = ScalarTraits<T>::from_rational(x), ty = ScalarTraits<T>::from_rational(y);
   const T diff = (tx + ty) - tx;
   EXPECT_EQ(diff.v, 0.0);
-  EXPECT_TRUE(encloses(diff, y));
+  EXPECT_TRUE(worst_case_encloses(diff, y));
   // Dividing by the cancelled difference: its radius reaches its magnitude, so unbounded.
   EXPECT_TRUE(TrackedTraits<double>::is_unbounded((ty / diff).e));
 }
@@ -91,13 +91,13 @@ TEST(TrackedWorstCase, CancellationThatLosesEveryDigitIsEnclosed) {
 // has u|v| = 2^-1075, which itself rounds to 0. Each is covered by the upward step.
 TEST(TrackedWorstCase, UnderflowingProductsAreEnclosed) {
   using T = Tracked<double>;
-  const Rational a = two_to(-540) * 3, b = two_to(-540) / 3 - two_to(-600);
+  const Rational a = worst_case_two_to(-540) * 3, b = worst_case_two_to(-540) / 3 - worst_case_two_to(-600);
   const T ta = ScalarTraits<T>::from_rational(a), tb = ScalarTraits<T>::from_rational(b);
-  EXPECT_TRUE(encloses(ta * tb, a * b));
-  EXPECT_TRUE(encloses(tb * tb * tb, b * b * b));  // exact value ~2^-1625: midpoint 0
+  EXPECT_TRUE(worst_case_encloses(ta * tb, a * b));
+  EXPECT_TRUE(worst_case_encloses(tb * tb * tb, b * b * b));  // exact value ~2^-1625: midpoint 0
   const T near_min{0x1.0000000000001p-511, 0}, other{0x1.fffffffffffffp-512, 0};
-  EXPECT_TRUE(encloses(near_min * other, exact(near_min.v) * exact(other.v)));
-  EXPECT_TRUE(encloses(near_min * other / T{3.0, 0}, exact(near_min.v) * exact(other.v) / 3));
+  EXPECT_TRUE(worst_case_encloses(near_min * other, exact(near_min.v) * exact(other.v)));
+  EXPECT_TRUE(worst_case_encloses(near_min * other / T{3.0, 0}, exact(near_min.v) * exact(other.v) / 3));
 }
 
 // Overflow of the midpoint or of the radius alone is unbounded, never a finite wrong radius.
@@ -130,7 +130,7 @@ struct Expr {
 /// so that x - x and x * 0 occur).
 rc::Gen<Rational> leaf(int kmax) {
   return rc::gen::oneOf(rc::gen::map(rc::gen::inRange(-3, 4), [](int k) { return Rational(k); }),
-                        rc::gen::apply([](long p, long q, int k) { return Rational(p) / q * two_to(k); },
+                        rc::gen::apply([](long p, long q, int k) { return Rational(p) / q * worst_case_two_to(k); },
                                        rc::gen::inRange<long>(-(1L << 40), 1L << 40),
                                        rc::gen::inRange<long>(1, 1L << 20), rc::gen::inRange(-kmax, kmax + 1)));
 }
@@ -179,7 +179,7 @@ void check_tree(const Expr& e) {
     RC_ASSERT(TrackedTraits<F>::is_unbounded(t.e));
     return;
   }
-  RC_ASSERT(encloses(t, *x));
+  RC_ASSERT(worst_case_encloses(t, *x));
 }
 
 RC_GTEST_PROP(TrackedWorstCase, ExactValueOfRandomExpressionTreesLiesWithinTheRadiusInDouble, ()) {

@@ -25,7 +25,7 @@ mechanism:
 
 const char* kHeader = "sample,O2.x,O2.y,A.x,A.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank,alpha.coupler,alpha.rocker\n";
 
-std::string error_of(const std::string& csv) {
+std::string motion_data_error(const std::string& csv) {
   try {
     parse_motion_data(csv, "data.csv", fourbar());
   } catch (const InputError& e) {
@@ -71,23 +71,23 @@ TEST(MotionData, ReadsRowsExactlyAndLeavesEmptyUserCellsUnrecorded) {
 }
 
 TEST(MotionData, ErrorsNameTheLineColumnAndProblem) {
-  EXPECT_NE(error_of(std::string(kHeader) + "s1,0,0,3,4,11,zz,11,0,2,5,1,1\n").find("data.csv: line 2, column 7 (`B.y`)"),
+  EXPECT_NE(motion_data_error(std::string(kHeader) + "s1,0,0,3,4,11,zz,11,0,2,5,1,1\n").find("data.csv: line 2, column 7 (`B.y`)"),
             std::string::npos)
-      << error_of(std::string(kHeader) + "s1,0,0,3,4,11,zz,11,0,2,5,1,1\n");
-  EXPECT_NE(error_of(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,1\n").find("line 2"), std::string::npos);
-  EXPECT_NE(error_of("sample,O2.x,Q.x\n").find("column 3 (`Q.x`)"), std::string::npos);
-  EXPECT_NE(error_of("sample,O2.x,O2.x\n").find("duplicate column"), std::string::npos);
-  EXPECT_NE(error_of("O2.x,O2.y\n").find("missing column `A.x`"), std::string::npos);
-  EXPECT_NE(error_of(std::string(kHeader)).find("no data rows"), std::string::npos);
-  EXPECT_NE(error_of("O2.x,O2.y,A.x,A.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank\n0,0,3,4,11,10,11,0,2,5\n")
+      << motion_data_error(std::string(kHeader) + "s1,0,0,3,4,11,zz,11,0,2,5,1,1\n");
+  EXPECT_NE(motion_data_error(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,1\n").find("line 2"), std::string::npos);
+  EXPECT_NE(motion_data_error("sample,O2.x,Q.x\n").find("column 3 (`Q.x`)"), std::string::npos);
+  EXPECT_NE(motion_data_error("sample,O2.x,O2.x\n").find("duplicate column"), std::string::npos);
+  EXPECT_NE(motion_data_error("O2.x,O2.y\n").find("missing column `A.x`"), std::string::npos);
+  EXPECT_NE(motion_data_error(std::string(kHeader)).find("no data rows"), std::string::npos);
+  EXPECT_NE(motion_data_error("O2.x,O2.y,A.x,A.y,B.x,B.y,O4.x,O4.y,omega.crank,alpha.crank\n0,0,3,4,11,10,11,0,2,5\n")
                 .find("no column to check"),
             std::string::npos);
-  EXPECT_NE(error_of(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,nan,1\n").find("column 12 (`alpha.coupler`)"),
+  EXPECT_NE(motion_data_error(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,nan,1\n").find("column 12 (`alpha.coupler`)"),
             std::string::npos);
-  EXPECT_NE(error_of(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,-7e400,1\n").find("beyond the range of binary64"),
+  EXPECT_NE(motion_data_error(std::string(kHeader) + "s1,0,0,3,4,11,10,11,0,2,5,-7e400,1\n").find("beyond the range of binary64"),
             std::string::npos);
-  EXPECT_NE(error_of("sample,alpha.g\n").find("the ground link has no rates"), std::string::npos);
-  EXPECT_NE(error_of("sample,alpha.nolink\n").find("unknown link `nolink`"), std::string::npos);
+  EXPECT_NE(motion_data_error("sample,alpha.g\n").find("the ground link has no rates"), std::string::npos);
+  EXPECT_NE(motion_data_error("sample,alpha.nolink\n").find("unknown link `nolink`"), std::string::npos);
 }
 
 // Columns are matched whole against the scene's names: a name with two meanings in one scene is

@@ -14,9 +14,9 @@
 namespace linkproof {
 namespace {
 
-Rational q(long p, long d = 1) { return Rational(cln::cl_I(p)) / cln::cl_I(d); }
+Rational rational_of(long p, long d = 1) { return Rational(cln::cl_I(p)) / cln::cl_I(d); }
 
-std::string scene_path(const std::string& file) {
+std::string scene_file_path(const std::string& file) {
   return std::string(LINKPROOF_SOURCE_DIR) + "/verify/scenes/" + file;
 }
 
@@ -71,30 +71,30 @@ bool same_scene(const PolygonScene& a, const PolygonScene& b) {
 // ---- valid scenes ----------------------------------------------------------------------------
 
 TEST(BundledScene, PentagonParsesToExactValues) {
-  const std::string path = scene_path("pentagon.yaml");
+  const std::string path = scene_file_path("pentagon.yaml");
   const PolygonScene s = load_polygon_scene(path);
   EXPECT_EQ(s.name, "pentagon");
   EXPECT_EQ(s.source, path);
-  expect_joints(s, {{q(0), q(0)}, {q(1), q(4)}, {q(5), q(5)}, {q(7), q(1)}, {q(3), q(-2)}});
-  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{q(2), q(-1)}));
-  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{q(1), q(3)}));
-  EXPECT_EQ(s.polygon.dead_centre_determinant(), q(-22));  // conventions §A8: D = -22
+  expect_joints(s, {{rational_of(0), rational_of(0)}, {rational_of(1), rational_of(4)}, {rational_of(5), rational_of(5)}, {rational_of(7), rational_of(1)}, {rational_of(3), rational_of(-2)}});
+  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{rational_of(2), rational_of(-1)}));
+  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{rational_of(1), rational_of(3)}));
+  EXPECT_EQ(s.polygon.dead_centre_determinant(), rational_of(-22));  // conventions §A8: D = -22
 }
 
 TEST(BundledScene, HexagonParsesToExactValues) {
-  const PolygonScene s = load_polygon_scene(scene_path("hexagon.yaml"));
+  const PolygonScene s = load_polygon_scene(scene_file_path("hexagon.yaml"));
   EXPECT_EQ(s.name, "hexagon");
-  expect_joints(s, {{q(0), q(0)}, {q(0), q(4)}, {q(3), q(6)}, {q(7), q(5)}, {q(8), q(1)}, {q(4), q(-2)}});
-  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{q(1), q(-2), q(3)}));
-  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{q(1, 2), q(-1), q(2)}));
+  expect_joints(s, {{rational_of(0), rational_of(0)}, {rational_of(0), rational_of(4)}, {rational_of(3), rational_of(6)}, {rational_of(7), rational_of(5)}, {rational_of(8), rational_of(1)}, {rational_of(4), rational_of(-2)}});
+  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{rational_of(1), rational_of(-2), rational_of(3)}));
+  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{rational_of(1, 2), rational_of(-1), rational_of(2)}));
 }
 
 TEST(BundledScene, DeadCentrePentagonParsesWithZeroDeterminant) {
-  const PolygonScene s = load_polygon_scene(scene_path("pentagon_dead_centre.yaml"));
+  const PolygonScene s = load_polygon_scene(scene_file_path("pentagon_dead_centre.yaml"));
   EXPECT_EQ(s.name, "pentagon-dead-centre");
   EXPECT_EQ(s.polygon.n(), 5);
-  EXPECT_EQ(cross(s.polygon.side(3), s.polygon.side(4)), q(0));
-  EXPECT_EQ(s.polygon.dead_centre_determinant(), q(0));
+  EXPECT_EQ(cross(s.polygon.side(3), s.polygon.side(4)), rational_of(0));
+  EXPECT_EQ(s.polygon.dead_centre_determinant(), rational_of(0));
 }
 
 TEST(ParsePolygonScene, ReadsDecimalsAndFractionsExactlyQuotedOrNot) {
@@ -102,22 +102,22 @@ TEST(ParsePolygonScene, ReadsDecimalsAndFractionsExactlyQuotedOrNot) {
       pentagon_text("[[0.1, '7/3'], [1, 4], [\"5\", 5e0], [7, 1], [3, -2.50]]", "[1/3, '-0.5']",
                     "[2.5e-3, +4]"),
       "test.yaml");
-  expect_joints(s, {{q(1, 10), q(7, 3)}, {q(1), q(4)}, {q(5), q(5)}, {q(7), q(1)}, {q(3), q(-5, 2)}});
-  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{q(1, 3), q(-1, 2)}));
-  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{q(1, 400), q(4)}));
+  expect_joints(s, {{rational_of(1, 10), rational_of(7, 3)}, {rational_of(1), rational_of(4)}, {rational_of(5), rational_of(5)}, {rational_of(7), rational_of(1)}, {rational_of(3), rational_of(-5, 2)}});
+  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{rational_of(1, 3), rational_of(-1, 2)}));
+  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{rational_of(1, 400), rational_of(4)}));
   EXPECT_EQ(s.source, "test.yaml");
 }
 
 TEST(ParsePolygonScene, AcceptsQuadrilateralWithOneInput) {
   const PolygonScene s = parse_polygon_scene(pentagon_text("[[0, 0], [1, 3], [4, 4], [5, 0]]", "[1]", "[-1]"), "t");
   EXPECT_EQ(s.polygon.n(), 4);
-  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{q(1)}));
-  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{q(-1)}));
+  EXPECT_EQ(s.rates.omega, (std::vector<Rational>{rational_of(1)}));
+  EXPECT_EQ(s.rates.omega_dot, (std::vector<Rational>{rational_of(-1)}));
 }
 
 TEST(PolygonSceneToYaml, RoundTripsBundledScenesExactly) {
   for (const char* file : {"pentagon.yaml", "hexagon.yaml", "pentagon_dead_centre.yaml"}) {
-    const PolygonScene s = load_polygon_scene(scene_path(file));
+    const PolygonScene s = load_polygon_scene(scene_file_path(file));
     const std::string yaml = polygon_scene_to_yaml(s);
     EXPECT_TRUE(same_scene(parse_polygon_scene(yaml, s.source), s)) << file << ":\n" << yaml;
   }
@@ -127,9 +127,9 @@ TEST(PolygonSceneToYaml, WritesFractionsAsExactStringsAndRoundTripsAwkwardNames)
   PolygonScene s;
   s.name = "null: \"#x\" \\ ~";
   s.source = "api";
-  s.polygon = Polygon<Rational>({{q(1, 3), q(-7, 2)}, {q(2), q(0)}, {q(5, 4), q(9)}, {q(-1, 10), q(2, 3)}});
-  s.rates.omega = {q(6, 4)};
-  s.rates.omega_dot = {q(-1, 400)};
+  s.polygon = Polygon<Rational>({{rational_of(1, 3), rational_of(-7, 2)}, {rational_of(2), rational_of(0)}, {rational_of(5, 4), rational_of(9)}, {rational_of(-1, 10), rational_of(2, 3)}});
+  s.rates.omega = {rational_of(6, 4)};
+  s.rates.omega_dot = {rational_of(-1, 400)};
   const std::string yaml = polygon_scene_to_yaml(s);
   EXPECT_NE(yaml.find("\"1/3\""), std::string::npos) << yaml;
   EXPECT_NE(yaml.find("\"3/2\""), std::string::npos) << yaml;

@@ -21,8 +21,8 @@
 namespace linkproof {
 namespace {
 
-/// Seed of the random polygons (replay: generate_random_polygon(kSeed, n, index)).
-constexpr std::uint64_t kSeed = 19660315;
+/// Seed of the random polygons (replay: generate_random_polygon(kConstructionRouteSeed, n, index)).
+constexpr std::uint64_t kConstructionRouteSeed = 19660315;
 
 /// The construction route as it was before the fast path: construct_four_bar for each j, its
 /// Defined values read in the order i_{n-1,j}, i_{n-2,j}, lambda_j, mu_j (the first undefined one
@@ -119,10 +119,10 @@ TYPED_TEST_SUITE(ConstructionRoute, RouteTypes);
 
 TYPED_TEST(ConstructionRoute, StepsGiveConstructFourBarsValuesForEveryJOnRandomPolygons) {
   using T = TypeParam;
-  SCOPED_TRACE("seed " + std::to_string(kSeed));
+  SCOPED_TRACE("seed " + std::to_string(kConstructionRouteSeed));
   for (int n : {4, 5, 7, 12}) {
     for (int i = 0; i < 12; ++i) {
-      const RandomPolygonCase rc = generate_random_polygon(kSeed, n, i);
+      const RandomPolygonCase rc = generate_random_polygon(kConstructionRouteSeed, n, i);
       SCOPED_TRACE("n " + std::to_string(n) + ", index " + std::to_string(i) + ": " + describe(rc.polygon, rc.rates));
       const Polygon<T> p = rc.polygon.convert<T>();
       const FourBarFrame<T> frame = make_four_bar_frame(p);
@@ -150,11 +150,11 @@ TYPED_TEST(ConstructionRoute, StepsGiveConstructFourBarsValuesForEveryJOnRandomP
 }
 
 TYPED_TEST(ConstructionRoute, FastRouteEqualsConstructFourBarRouteOnRandomPolygons) {
-  SCOPED_TRACE("seed " + std::to_string(kSeed));
+  SCOPED_TRACE("seed " + std::to_string(kConstructionRouteSeed));
   int undefined = 0;
   for (int n : {4, 5, 6, 7, 12, 40}) {
     for (int i = 0; i < 24; ++i) {
-      const RandomPolygonCase rc = generate_random_polygon(kSeed, n, i);
+      const RandomPolygonCase rc = generate_random_polygon(kConstructionRouteSeed, n, i);
       SCOPED_TRACE("n " + std::to_string(n) + ", index " + std::to_string(i));
       undefined += expect_route_matches_reference<TypeParam>(rc.polygon, rc.rates);
     }

@@ -13,16 +13,16 @@
 namespace linkproof {
 namespace {
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+std::string sampling_source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
 std::vector<MechanismDataClaim> bound_claims(const std::string& file, const MechanismScene& scene) {
-  MechanismClaimFile f = load_mechanism_claim_file(source(file));
+  MechanismClaimFile f = load_mechanism_claim_file(sampling_source(file));
   for (MechanismDataClaim& c : f.claims) bind_mechanism_claim(c, scene);
   return f.claims;
 }
 
 TEST(MechanismSampling, ConfigurationsReplayFromSeedAndIndexAndKeepTheTopology) {
-  const MechanismScene s = load_mechanism_scene(source("verify/scenes/mechanisms/inverted_slider_crank.yaml"));
+  const MechanismScene s = load_mechanism_scene(sampling_source("verify/scenes/mechanisms/inverted_slider_crank.yaml"));
   constexpr std::uint64_t kSeed = 7;
   std::cout << "seed " << kSeed << "\n";
   for (int i = 0; i < 20; ++i) {
@@ -50,7 +50,7 @@ TEST(MechanismSampling, TrueClaimsHoldAndWrongOnesAreDisprovedWithAReplayableCou
            {"verify/claims/mechanisms/sixbar_watt.yaml", "verify/scenes/mechanisms/pmks_watt_i_0.yaml"},
            {"verify/claims/mechanisms/sixbar_stephenson.yaml",
             "verify/scenes/mechanisms/pmks_stephenson_iii_example_2_0.yaml"}}) {
-    const MechanismScene s = load_mechanism_scene(source(scene_file));
+    const MechanismScene s = load_mechanism_scene(sampling_source(scene_file));
     const std::vector<MechanismDataClaim> claims = bound_claims(claims_file, s);
     TopologySampling o;
     o.count = 12;
@@ -78,7 +78,7 @@ TEST(MechanismSampling, TrueClaimsHoldAndWrongOnesAreDisprovedWithAReplayableCou
 }
 
 TEST(MechanismSampling, ShrinkingMovesTowardSmallIntegers) {
-  const MechanismScene s = load_mechanism_scene(source("verify/scenes/mechanisms/seed001_fourbar.yaml"));
+  const MechanismScene s = load_mechanism_scene(sampling_source("verify/scenes/mechanisms/seed001_fourbar.yaml"));
   std::vector<MechanismDataClaim> claims = bound_claims("verify/claims/mechanisms/fourbar.yaml", s);
   std::erase_if(claims, [](const MechanismDataClaim& c) { return c.info.id != "fourbar.alpha3_at_this_configuration"; });
   ASSERT_EQ(claims.size(), 1u);
@@ -99,7 +99,7 @@ TEST(MechanismSampling, ShrinkingMovesTowardSmallIntegers) {
 }
 
 TEST(MechanismSampling, AClaimUndefinedEverywhereIsUndefinedNotAPass) {
-  const MechanismScene s = load_mechanism_scene(source("verify/scenes/mechanisms/seed001_fourbar.yaml"));
+  const MechanismScene s = load_mechanism_scene(sampling_source("verify/scenes/mechanisms/seed001_fourbar.yaml"));
   MechanismDataClaim c;
   c.info.id = "self_pole";
   c.lhs = MechanismExpression::parse("pole(\"3\", \"3\")");

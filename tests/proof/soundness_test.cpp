@@ -10,12 +10,12 @@
 namespace linkproof {
 namespace {
 
-DataClaim one_claim(const std::string& body) {
+DataClaim soundness_claim(const std::string& body) {
   const ClaimFile f = parse_claim_file("claims:\n" + body, "test.yaml");
   return f.claims.front();
 }
 
-ProveOptions no_ladder() {
+ProveOptions no_ladder_options() {
   ProveOptions o;
   o.ladder_seconds = 0;
   return o;
@@ -24,7 +24,7 @@ ProveOptions no_ladder() {
 // Finding 1: a bounded range was proved at its first n (4, where no pair terms exist), and the
 // printed argument still said "At n = 5". (22) with j < l sums is false.
 TEST(Soundness, BoundedRangeWrongClaimWithZeroLadderIsDisproved) {
-  const DataClaim c = one_claim(R"Y(  - id: eq22.lt
+  const DataClaim c = soundness_claim(R"Y(  - id: eq22.lt
     source: test
     statement: "(22) summed over j < l only"
     n: "4..100"
@@ -35,7 +35,7 @@ TEST(Soundness, BoundedRangeWrongClaimWithZeroLadderIsDisproved) {
       - rho*sum_pairs_lt(i_cpl[j]*i_cpl[l]*omega[j]*omega[l])
 )Y");
   GroundTruthEngine engine;
-  const ProofResult r = prove_claim(engine, c, no_ladder());
+  const ProofResult r = prove_claim(engine, c, no_ladder_options());
   EXPECT_EQ(r.verdict, ProofVerdict::Disproved) << to_string(r.verdict) << " " << r.scope << " " << r.error;
   ASSERT_TRUE(r.counterexample.has_value());
   EXPECT_GE(r.counterexample->polygon.n(), 5);
@@ -43,14 +43,14 @@ TEST(Soundness, BoundedRangeWrongClaimWithZeroLadderIsDisproved) {
 
 // Finding 2: a claim that is not local was "proved" from one n and a second of per-n checks.
 TEST(Soundness, NonLocalClaimGetsProvedForWithTheExactListOfN) {
-  const DataClaim c = one_claim(R"Y(  - id: first.input
+  const DataClaim c = soundness_claim(R"Y(  - id: first.input
     source: test
     statement: "side 1 turns at the first input's rate"
     lhs: side_omega[1]
     rhs: omega[1]
 )Y");
   GroundTruthEngine engine;
-  const ProofResult r = prove_claim(engine, c, no_ladder());
+  const ProofResult r = prove_claim(engine, c, no_ladder_options());
   EXPECT_EQ(r.verdict, ProofVerdict::ProvedFor) << to_string(r.verdict) << " " << r.error;
   EXPECT_FALSE(r.not_local.empty());
   EXPECT_EQ(r.proved_n, (std::vector<int>{4, 5}));
@@ -62,14 +62,14 @@ TEST(Soundness, NonLocalClaimGetsProvedForWithTheExactListOfN) {
 // Finding 2, second half: a claim true at n = 4, 5 but false from n = 6 on; before, it came
 // back proved. Positive verdicts now run the counterexample search over n = 4..8 first.
 TEST(Soundness, ClaimFalseOnlyFromN6IsDisprovedNotProved) {
-  const DataClaim c = one_claim(R"Y(  - id: square.of.pairs
+  const DataClaim c = soundness_claim(R"Y(  - id: square.of.pairs
     source: test
     statement: "(sum of pair products)^2 = sum of squared pair products (true with <= 2 inputs)"
     lhs: sum_pairs_lt(omega[j]*omega[l])^2
     rhs: sum_pairs_lt(omega[j]^2*omega[l]^2)
 )Y");
   GroundTruthEngine engine;
-  const ProofResult r = prove_claim(engine, c, no_ladder());
+  const ProofResult r = prove_claim(engine, c, no_ladder_options());
   EXPECT_EQ(r.verdict, ProofVerdict::Disproved) << to_string(r.verdict) << " " << r.scope;
   ASSERT_TRUE(r.counterexample.has_value());
   EXPECT_GE(r.counterexample->polygon.n(), 6);
@@ -81,7 +81,7 @@ TEST(Soundness, OutOfRangeIndicesAreRefusedAtLoadNamingTheLineAndColumn) {
                                  "omega[2]", "r[n+1]", "omega[n-2]"}) {
     SCOPED_TRACE(lhs);
     try {
-      one_claim("  - id: x\n    source: t\n    statement: s\n    lhs: " + lhs + "\n    rhs: 1\n");
+      soundness_claim("  - id: x\n    source: t\n    statement: s\n    lhs: " + lhs + "\n    rhs: 1\n");
       ADD_FAILURE() << "accepted";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("test.yaml:5:"), std::string::npos) << e.what();
@@ -89,14 +89,14 @@ TEST(Soundness, OutOfRangeIndicesAreRefusedAtLoadNamingTheLineAndColumn) {
     }
   }
   // omega[2] exists from n = 5: with the range stated it is accepted.
-  EXPECT_NO_THROW(one_claim("  - id: x\n    source: t\n    statement: s\n    n: 5..\n    lhs: omega[2]\n    rhs: omega[2]\n"));
+  EXPECT_NO_THROW(soundness_claim("  - id: x\n    source: t\n    statement: s\n    n: 5..\n    lhs: omega[2]\n    rhs: omega[2]\n"));
   // An index that grows away from its range for large n is refused too.
-  EXPECT_THROW(one_claim("  - id: x\n    source: t\n    statement: s\n    lhs: sum_j(r[2*j])\n    rhs: 1\n"), InputError);
-  EXPECT_NO_THROW(one_claim("  - id: x\n    source: t\n    statement: s\n    lhs: sum_pairs_lt(r[l-j])\n    rhs: 1\n"));
+  EXPECT_THROW(soundness_claim("  - id: x\n    source: t\n    statement: s\n    lhs: sum_j(r[2*j])\n    rhs: 1\n"), InputError);
+  EXPECT_NO_THROW(soundness_claim("  - id: x\n    source: t\n    statement: s\n    lhs: sum_pairs_lt(r[l-j])\n    rhs: 1\n"));
 }
 
 TEST(Soundness, Section3FormulaWithoutItsRangeIsRefusedAtLoad) {
-  EXPECT_THROW(one_claim(R"Y(  - id: sec3.any.n
+  EXPECT_THROW(soundness_claim(R"Y(  - id: sec3.any.n
     source: test
     statement: "the pentagon formula, but for every n"
     lhs: omega_dot_out
@@ -121,21 +121,21 @@ TEST(Soundness, ReadingThatReadsOtherSidesIsNotLifted) {
   GroundTruthEngine engine;
   std::string with_reading = body;
   with_reading.replace(with_reading.find("READING"), 7, "reading: [undisplaced_start]");
-  const LiftCheck lift = check_lift_lemma(engine, one_claim(with_reading), 6);
+  const LiftCheck lift = check_lift_lemma(engine, soundness_claim(with_reading), 6);
   ASSERT_FALSE(lift.violations.empty());
   EXPECT_NE(lift.violations.front().find("depends on r_"), std::string::npos) << lift.violations.front();
-  const ProofResult r = prove_claim(engine, one_claim(with_reading), no_ladder());
+  const ProofResult r = prove_claim(engine, soundness_claim(with_reading), no_ladder_options());
   EXPECT_EQ(r.verdict, ProofVerdict::ProvedFor) << to_string(r.verdict);
 
   std::string plain = body;
   plain.replace(plain.find("READING"), 7, "note: displaced");
-  EXPECT_TRUE(check_lift_lemma(engine, one_claim(plain), 6).violations.empty());
-  EXPECT_EQ(prove_claim(engine, one_claim(plain), no_ladder()).verdict, ProofVerdict::Proved);
+  EXPECT_TRUE(check_lift_lemma(engine, soundness_claim(plain), 6).violations.empty());
+  EXPECT_EQ(prove_claim(engine, soundness_claim(plain), no_ladder_options()).verdict, ProofVerdict::Proved);
 }
 
 // Finding 6: a polynomial identity came back with 17 exceptions it never touches.
 TEST(Soundness, PolynomialIdentityIsProvedWithNoExceptions) {
-  const DataClaim c = one_claim(R"Y(  - id: kp.translation
+  const DataClaim c = soundness_claim(R"Y(  - id: kp.translation
     source: test
     statement: "K'_j = K_{n-2} - r_j"
     for_each: j
@@ -143,7 +143,7 @@ TEST(Soundness, PolynomialIdentityIsProvedWithNoExceptions) {
     rhs: vx(K[n-2] - r[j]) + vy(K[n-2] - r[j])
 )Y");
   GroundTruthEngine engine;
-  const ProofResult r = prove_claim(engine, c, no_ladder());
+  const ProofResult r = prove_claim(engine, c, no_ladder_options());
   EXPECT_EQ(r.verdict, ProofVerdict::Proved) << to_string(r.verdict) << " " << r.error;
   EXPECT_TRUE(r.except.empty()) << r.except.size() << " exceptions, first: " << r.except.front().meaning;
 }
@@ -151,14 +151,14 @@ TEST(Soundness, PolynomialIdentityIsProvedWithNoExceptions) {
 // Finding 6: a divisor inside the claim's own expression, cancelled by normal(), made "proved"
 // where the claim is undefined (at the dead centre).
 TEST(Soundness, CancelledDivisorOfTheClaimIsInTheExceptionalSet) {
-  const DataClaim c = one_claim(R"Y(  - id: d.over.d
+  const DataClaim c = soundness_claim(R"Y(  - id: d.over.d
     source: test
     statement: "D / D = 1"
     lhs: D / cross(r[n-2], r[n-1])
     rhs: 1
 )Y");
   GroundTruthEngine engine;
-  const ProofResult r = prove_claim(engine, c, no_ladder());
+  const ProofResult r = prove_claim(engine, c, no_ladder_options());
   EXPECT_EQ(r.verdict, ProofVerdict::ProvedGenerically) << to_string(r.verdict) << " " << r.error;
   ASSERT_EQ(r.except.size(), 1u);
   EXPECT_NE(r.except.front().meaning.find("dead centre"), std::string::npos) << r.except.front().meaning;

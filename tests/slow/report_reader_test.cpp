@@ -28,7 +28,7 @@ using test::run_cli;
 using test::slurp;
 using test::TempDir;
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+std::string reader_source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
 size_t count(const std::string& s, const std::string& what) {
   size_t n = 0;
@@ -39,7 +39,7 @@ size_t count(const std::string& s, const std::string& what) {
 TEST(ReportReader, HtmlReportRendersInChromiumWithMathAndFiguresSlow) {
   if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
   TempDir dir("html");
-  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
+  ASSERT_EQ(run_cli({"report", reader_source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
   const fs::path page = dir.path / "pentagon.html";
   const std::string before = slurp(page);
   ASSERT_NE(before.find("katex.render"), std::string::npos) << "KaTeX (libjs-katex) was not inlined";
@@ -62,7 +62,7 @@ TEST(ReportReader, HtmlReportRendersInChromiumWithMathAndFiguresSlow) {
 TEST(ReportReader, HtmlReportScreenshotIsNotBlankSlow) {
   if (!on_path("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh installs it)";
   TempDir dir("shot");
-  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
+  ASSERT_EQ(run_cli({"report", reader_source("verify/scenes/pentagon.yaml"), "--out", dir.path.string()}).code, 0);
   // A blank page of the same size is the reference: PNG compresses a uniform image to almost
   // nothing, so a page with text, formulas and a figure is many times larger.
   std::ofstream(dir.path / "blank.html") << "<!DOCTYPE html><html><body></body></html>";
@@ -80,8 +80,8 @@ TEST(ReportReader, HtmlReportScreenshotIsNotBlankSlow) {
 TEST(ReportReader, LatexReportsCompileWithPdflatexSlow) {
   if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed (scripts/install_deps.sh installs it)";
   TempDir dir("tex");
-  ASSERT_EQ(run_cli({"report", source("verify/scenes/pentagon.yaml"), "--format", "tex", "--out", dir.path.string()}).code, 0);
-  ASSERT_EQ(run_cli({"report", source("verify/scenes/mechanisms/seed001_fourbar.yaml"), "--plans", "--format", "tex",
+  ASSERT_EQ(run_cli({"report", reader_source("verify/scenes/pentagon.yaml"), "--format", "tex", "--out", dir.path.string()}).code, 0);
+  ASSERT_EQ(run_cli({"report", reader_source("verify/scenes/mechanisms/seed001_fourbar.yaml"), "--plans", "--format", "tex",
                      "--out", dir.path.string()})
                 .code,
             0);

@@ -15,12 +15,12 @@
 namespace linkproof {
 namespace {
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+std::string sixbar_source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
 TEST(SixBarTopologyProof, TheStephensonDyadsAccelerationClosureIsProvedSymbolically) {
   const MechanismScene scene =
-      load_mechanism_scene(source("verify/scenes/mechanisms/pmks_stephenson_iii_example_2_0.yaml"));
-  MechanismClaimFile file = load_mechanism_claim_file(source("verify/claims/mechanisms/sixbar_stephenson.yaml"));
+      load_mechanism_scene(sixbar_source("verify/scenes/mechanisms/pmks_stephenson_iii_example_2_0.yaml"));
+  MechanismClaimFile file = load_mechanism_claim_file(sixbar_source("verify/claims/mechanisms/sixbar_stephenson.yaml"));
   std::vector<MechanismDataClaim> claims;
   for (MechanismDataClaim& c : file.claims)
     if (c.info.id == "sixbar_stephenson.dyad_acceleration_closure") {

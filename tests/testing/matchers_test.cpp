@@ -15,11 +15,11 @@
 namespace linkproof::testing {
 namespace {
 
-Point pt(long x, long y) { return {Rational(x), Rational(y)}; }
+Point int_point(long x, long y) { return {Rational(x), Rational(y)}; }
 
 MechanismCase seed001_fourbar() {
   // conventions §B: O2 (0,0), A (3,4), B (11,10), O4 (11,0), omega2 = 2, alpha2 = 5.
-  return make_fourbar(pt(0, 0), pt(3, 4), pt(11, 10), pt(11, 0), 2, 5);
+  return make_fourbar(int_point(0, 0), int_point(3, 4), int_point(11, 10), int_point(11, 0), 2, 5);
 }
 
 // The textbook answer of docs/conventions.md §B (verify/scenes/mechanisms/seed001_fourbar.yaml), written
@@ -92,7 +92,7 @@ TEST(TestingMatchers, AngularAccelerationsMatchRejectsAWrongLinkAndShowsTheExact
 }
 
 TEST(TestingMatchers, ClaimHoldsOnTheA8PentagonAndExplainsAnErratum) {
-  PolygonCase p{"polygon/scattered/n=5", Polygon<Rational>({pt(0, 0), pt(1, 4), pt(5, 5), pt(7, 1), pt(3, -2)}),
+  PolygonCase p{"polygon/scattered/n=5", Polygon<Rational>({int_point(0, 0), int_point(1, 4), int_point(5, 5), int_point(7, 1), int_point(3, -2)}),
                 {{2, -1}, {1, 3}}};
   EXPECT_THAT(p, ClaimHolds("dijksman1966.eq22"));
   EXPECT_THAT(p, ClaimHolds("dijksman1966.sec3"));
@@ -105,7 +105,7 @@ TEST(TestingMatchers, ClaimHoldsOnTheA8PentagonAndExplainsAnErratum) {
 }
 
 TEST(TestingMatchers, CheckClaimGivesATypedVerdictAndTheResidualAsExactAndDouble) {
-  const PolygonCase p{"polygon/scattered/n=5", Polygon<Rational>({pt(0, 0), pt(1, 4), pt(5, 5), pt(7, 1), pt(3, -2)}),
+  const PolygonCase p{"polygon/scattered/n=5", Polygon<Rational>({int_point(0, 0), int_point(1, 4), int_point(5, 5), int_point(7, 1), int_point(3, -2)}),
                       {{2, -1}, {1, 3}}};
   const ClaimResult holds = check_claim("dijksman1966.eq22", p);
   EXPECT_TRUE(holds.found);

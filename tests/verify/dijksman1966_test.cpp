@@ -19,7 +19,7 @@ namespace {
 
 constexpr std::uint64_t kSeed = 20261121;
 
-const ClaimOutcome& find_claim(const PolygonCheck& c, const std::string& id) {
+const ClaimOutcome& find_outcome(const PolygonCheck& c, const std::string& id) {
   for (const auto& o : c.claims)
     if (o.info.id == id) return o;
   throw std::runtime_error("claim not in check: " + id);
@@ -42,7 +42,7 @@ TEST(Dijksman1966, PentagonEq22TermsAndMixedTermMatchConventionsA8) {
   GroundTruthEngine engine;
   const auto ex = test::spec_pentagon();
   const auto check = check_polygon(engine, dijksman1966::catalogue(), "p", ex.polygon, ex.rates, Arithmetic::Exact);
-  const auto& eq22 = find_claim(check, "dijksman1966.eq22");
+  const auto& eq22 = find_outcome(check, "dijksman1966.eq22");
   EXPECT_EQ(lhs_text(eq22.headline), "3755/1331");
   EXPECT_EQ(rhs_text(eq22.headline), "3755/1331");
   ASSERT_EQ(eq22.terms.size(), 5u);
@@ -53,8 +53,8 @@ TEST(Dijksman1966, PentagonEq22TermsAndMixedTermMatchConventionsA8) {
   EXPECT_EQ(rhs["omega_dot[2]"], "9/11");
   EXPECT_EQ(rhs["omega[2]^2"], "564/1331");
   EXPECT_EQ(rhs["omega[1]*omega[2]"], "-304/1331");
-  EXPECT_EQ(lhs_text(find_claim(check, "dijksman1966.eq21").headline), "608/1331");   // Delta omega-dot_{4,5}
-  EXPECT_EQ(rhs_text(find_claim(check, "dijksman1966.eq10").headline), "3147/1331");  // sum of four-bar parts
+  EXPECT_EQ(lhs_text(find_outcome(check, "dijksman1966.eq21").headline), "608/1331");   // Delta omega-dot_{4,5}
+  EXPECT_EQ(rhs_text(find_outcome(check, "dijksman1966.eq10").headline), "3147/1331");  // sum of four-bar parts
 }
 
 TEST(Dijksman1966, EveryErratumReadingFailsOnTheA8PentagonOrHexagon) {

@@ -58,7 +58,7 @@ void compare_vec(ClaimSides<Rational>& s, const std::string& label, const Vec2<R
 
 std::string text(const Vec2<Rational>& v) { return fmt::format("({}, {})", format_rational(v.x), format_rational(v.y)); }
 
-const char* kSource = "acceleration-polygon course notes: four-bar acceleration polygon (docs/conventions.md §B)";
+const char* kFourbarPolygonSource = "acceleration-polygon course notes: four-bar acceleration polygon (docs/conventions.md §B)";
 
 }  // namespace
 
@@ -67,7 +67,7 @@ MechanismCatalogue fourbar_polygon() {
   cat.name = "fourbar_polygon";
   const auto claim = [&](std::string id, std::string statement, Expectation e, std::string note, auto f,
                          bool (*applies)(const MechanismContext&)) {
-    cat.claims.push_back(MechanismClaim{ClaimInfo{std::move(id), kSource, std::move(statement), e, std::move(note), 4, 0},
+    cat.claims.push_back(MechanismClaim{ClaimInfo{std::move(id), kFourbarPolygonSource, std::move(statement), e, std::move(note), 4, 0},
                                         f, applies});
   };
   claim("seed001.velocity_polygon", "omega3, omega4 from the velocity polygon equal the engine's", Expectation::Holds, "",

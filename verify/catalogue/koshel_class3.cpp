@@ -11,7 +11,7 @@ namespace linkproof::catalogues {
 
 namespace {
 
-const char* kSource = "Koshel et al., docs/conventions.md §C";
+const char* kKoshelClass3Source = "Koshel et al., docs/conventions.md §C";
 
 MechanismSolution<Rational> solve_vector(const MechanismScene& s, const Linkage& g, const std::vector<MechanismInput>& in,
                                          bool coriolis = true) {
@@ -20,7 +20,7 @@ MechanismSolution<Rational> solve_vector(const MechanismScene& s, const Linkage&
       [&](const std::vector<Rational>& qd) { return rigid_body_acceleration_rhs<Rational>(g, qd, coriolis); }, s.source);
 }
 
-bool applies(const MechanismContext& c) {
+bool koshel_class3_applies(const MechanismContext& c) {
   const Linkage& g = c.scene.linkage;
   const auto one = g.find_link("1"), five = g.find_link("5");
   return c.truth.mobility == 1 && one && five && g.find_joint("A") && c.scene.inputs[0].kind == MechanismInput::Kind::Link &&
@@ -60,7 +60,7 @@ ClaimSides<Rational> inverted(const MechanismContext& c, bool coriolis) {
 }
 
 bool has_moving_guide_after_inversion(const MechanismContext& c) {
-  return applies(c) && c.scene.linkage.prismatic_count() > 0;
+  return koshel_class3_applies(c) && c.scene.linkage.prismatic_count() > 0;
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ MechanismCatalogue koshel_class3() {
   MechanismCatalogue cat;
   cat.name = "koshel_class3";
   cat.claims.push_back(MechanismClaim{
-      ClaimInfo{"koshel.driver5", kSource,
+      ClaimInfo{"koshel.driver5", kKoshelClass3Source,
                 "with rocker 5 as the driver (omega5, epsilon5 of the true motion) every link has the same omega and "
                 "epsilon as with crank 1 as the driver",
                 Expectation::Holds, "", 4, 0},
@@ -85,9 +85,9 @@ MechanismCatalogue koshel_class3() {
         }
         return s;
       },
-      applies});
+      koshel_class3_applies});
   cat.claims.push_back(MechanismClaim{
-      ClaimInfo{"koshel.eq15.rescaling", kSource,
+      ClaimInfo{"koshel.eq15.rescaling", kKoshelClass3Source,
                 "step (15): the acceleration plan drawn from a trial epsilon5 = 1, rescaled as a whole so that the crank "
                 "pin's acceleration a_A takes its true size, gives the true epsilon_i (compared squared: "
                 "(|a_A|/|a_A trial|)^2 epsilon_i(trial)^2 = epsilon_i^2)",
@@ -109,9 +109,9 @@ MechanismCatalogue koshel_class3() {
         }
         return s;
       },
-      applies});
+      koshel_class3_applies});
   cat.claims.push_back(MechanismClaim{
-      ClaimInfo{"koshel.eq15.superposition", kSource,
+      ClaimInfo{"koshel.eq15.superposition", kKoshelClass3Source,
                 "the correct use of the trial plan: epsilon_i = epsilon_i(0) + (epsilon1 - epsilon1(0)) omega_i/omega1, "
                 "epsilon_i(0) from the plan with epsilon5 = 0 (false position on the affine map)",
                 Expectation::Holds, "", 4, 0},
@@ -128,15 +128,15 @@ MechanismCatalogue koshel_class3() {
         }
         return s;
       },
-      applies});
+      koshel_class3_applies});
   cat.claims.push_back(MechanismClaim{
-      ClaimInfo{"koshel.coriolis.inversion", kSource,
+      ClaimInfo{"koshel.coriolis.inversion", kKoshelClass3Source,
                 "referred to any moving link as the frame (its guides then move), the solve with the Coriolis term "
                 "2 omega_guide sigma-dot J u gives every relative epsilon_ik unchanged",
                 Expectation::Holds, "", 4, 0},
       [](const MechanismContext& c) { return inverted(c, true); }, has_moving_guide_after_inversion});
   cat.claims.push_back(MechanismClaim{
-      ClaimInfo{"koshel.coriolis.dropped", kSource,
+      ClaimInfo{"koshel.coriolis.dropped", kKoshelClass3Source,
                 "the same without the Coriolis term gives the relative epsilon_ik unchanged",
                 Expectation::Fails,
                 "the Coriolis term of a prismatic pair is needed as soon as the guide moves (docs/conventions.md §C, prismatic pair)", 4,

@@ -18,7 +18,7 @@ namespace linkproof::catalogues {
 
 namespace {
 
-const char* kSource = "Koshel et al., printed arithmetic, docs/conventions.md §C";
+const char* kPrintedChainSource = "Koshel et al., printed arithmetic, docs/conventions.md §C";
 
 struct PrintedStep {
   const char* id;         ///< e.g. "koshel.eq7"
@@ -47,7 +47,7 @@ MechanismClaim step_claim(const PrintedStep& s, Expectation expected, std::strin
   const Rational printed = q(s.printed);
   const int d = printed_decimals(s.printed);
   const Rational tol = half_unit(d);
-  ClaimInfo info{std::string(s.id) + id_suffix, std::string(kSource) + ", eq. " + s.equation,
+  ClaimInfo info{std::string(s.id) + id_suffix, std::string(kPrintedChainSource) + ", eq. " + s.equation,
                  fmt::format("{} {} = {} ({}; consistent iff |computed - printed| <= {} = half a unit of the "
                              "last printed digit)",
                              s.equation, s.formula, s.printed, what, format_rational(tol)),
