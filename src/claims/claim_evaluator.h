@@ -74,7 +74,7 @@ class ClaimEvaluator {
     std::optional<T> possibly_zero;
     for (const WrittenDivisor& d : side.divisors()) written_divisor(d, b, possibly_zero);
     RatePoly<T> v = scalar(side.expression(), b);
-    if (possibly_zero) v = std::move(v).right_scaled(*possibly_zero);
+    if (possibly_zero) v = v.right_scaled(*possibly_zero);
     return v;
   }
 
@@ -109,7 +109,7 @@ class ClaimEvaluator {
   static Scalar plus(Scalar a, const Scalar& b) { return std::move(a) + b; }
   static Scalar minus(Scalar a, const Scalar& b) { return std::move(a) - b; }
   static Scalar negated(const Scalar& a) { return -a; }
-  static Scalar times(Scalar a, Scalar b) { return std::move(a) * std::move(b); }
+  static Scalar times(const Scalar& a, const Scalar& b) { return a * b; }
   static Vector times(const Vector& a, const Scalar& b) { return {a.x * b, a.y * b}; }
   static Vector times(const Scalar& a, const Vector& b) { return {a * b.x, a * b.y}; }
 
@@ -144,7 +144,7 @@ class ClaimEvaluator {
       }
       case Op::Product: {
         Scalar p = scalar_of(n.children[0], b);
-        for (size_t i = 1; i < n.children.size(); ++i) p = times(std::move(p), scalar_of(n.children[i], b));
+        for (size_t i = 1; i < n.children.size(); ++i) p = times(p, scalar_of(n.children[i], b));
         return p;
       }
       case Op::Power: return power(scalar_of(n.children[0], b), n.exponent);

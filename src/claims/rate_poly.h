@@ -197,18 +197,17 @@ class RatePoly {
   }
   /// c * b and b * c for a constant c: the product with the constant polynomial c, term by term
   /// in the same order (c * coefficient, or coefficient * c), without merging.
-  RatePoly left_scaled(const T& c) const& { return RatePoly(*this).left_scaled(c); }
-  /// The same, in place when the polynomial is a temporary (a million terms at n = 1000).
-  RatePoly left_scaled(const T& c) && {
-    normalize();
-    for (auto& [m, k] : terms_) k = c * k;
-    return std::move(*this);
+  RatePoly left_scaled(const T& c) const {
+    RatePoly p = *this;
+    p.normalize();
+    for (auto& [m, k] : p.terms_) k = c * k;
+    return p;
   }
-  RatePoly right_scaled(const T& c) const& { return RatePoly(*this).right_scaled(c); }
-  RatePoly right_scaled(const T& c) && {
-    normalize();
-    for (auto& [m, k] : terms_) k = k * c;
-    return std::move(*this);
+  RatePoly right_scaled(const T& c) const {
+    RatePoly p = *this;
+    p.normalize();
+    for (auto& [m, k] : p.terms_) k = k * c;
+    return p;
   }
   /// Division by a rate-free polynomial; anything else is an InputError of the claim.
   friend RatePoly operator/(RatePoly a, const RatePoly& b) {

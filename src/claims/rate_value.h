@@ -67,13 +67,12 @@ class RateValue {
     return poly(-a.p_);
   }
   friend RateValue operator-(RateValue a, const RateValue& b) { return std::move(a) + (-b); }
-  /// By value: a polynomial operand that is a temporary is scaled in place, not copied.
-  friend RateValue operator*(RateValue a, RateValue b) {
+  friend RateValue operator*(const RateValue& a, const RateValue& b) {
     if (!a.is_poly_ && !b.is_poly_) return term(a.c_ * b.c_, Monomial::product(a.m_, b.m_));
     // A constant times a polynomial (a scaled sum, cot_phi * sum_pairs(...)): its terms in order.
-    if (!a.is_poly_ && a.m_.empty()) return poly(std::move(b.p_).left_scaled(a.c_));
-    if (!b.is_poly_ && b.m_.empty()) return poly(std::move(a.p_).right_scaled(b.c_));
-    return poly(std::move(a).to_poly() * std::move(b).to_poly());
+    if (!a.is_poly_ && a.m_.empty()) return poly(b.p_.left_scaled(a.c_));
+    if (!b.is_poly_ && b.m_.empty()) return poly(a.p_.right_scaled(b.c_));
+    return poly(RateValue(a).to_poly() * RateValue(b).to_poly());
   }
 
  private:
