@@ -9,8 +9,9 @@
 // what makes the sums of equal monomials the same bits as before). Bytes equal in every key
 // are skipped: the keys of a sum over pairs differ in two or four bytes of sixteen.
 //
-// The passes move (key, index) entries, not the items; the items are then gathered once into
-// their sorted places (one move per item). Below kRadixMinimum items
+// The passes move small records, not the items: (key, index) entries, or, when at most four
+// bytes vary, those bytes packed above the index in one 64-bit word. The items are then
+// gathered once into their sorted places (one move per item). Below kRadixMinimum items
 // std::stable_sort is cheaper than the 256-entry histograms.
 #pragma once
 
@@ -36,14 +37,22 @@ struct Entry {
 /// (the kernel clears every page) would cost as much as the passes.
 template <std::size_t W>
 struct Buffers {
-  std::vector<Entry<W>> from, to;        // the full entries
-  std::vector<std::uint64_t> packed, to_packed;  // keys of up to four bytes, with the index
-  std::vector<std::uint32_t> order;      // the sorted order of the items
+  std::vector<Entry<W>> entries, entries_out;     // full keys with the index
+  std::vector<std::uint64_t> packed, packed_out;  // up to four key bytes above the index
+  std::vector<std::uint32_t> order;               // the sorted order of the items
 };
 template <std::size_t W>
 Buffers<W>& buffers() {
   thread_local Buffers<W> b;
   return b;
+}
+/// One stable counting pass: `from` ordered by the byte digit(record) into `to` (same size).
+template <class Record, class Digit>
+void counting_pass(const std::vector<Record>& from, std::vector<Record>& to, Digit digit) {
+  std::array<std::size_t, 257> start{};
+  for (const Record& r : from) ++start[digit(r) + 1];
+  for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+  for (const Record& r : from) to[start[digit(r)]++] = r;
 }
 }  // namespace radix_detail
 
@@ -60,8 +69,6 @@ void stable_sort_by_key(std::vector<Item>& items, KeyOf key_of) {
   }
   using Entry = radix_detail::Entry<W>;
   radix_detail::Buffers<W>& buf = radix_detail::buffers<W>();
-  std::vector<Entry>& from = buf.from;
-  std::vector<Entry>& to = buf.to;
   Key any{}, all{};
   all.fill(~std::uint64_t{0});
   for (const Item& item : items) {
@@ -80,7 +87,7 @@ void stable_sort_by_key(std::vector<Item>& items, KeyOf key_of) {
     // Up to four varying bytes (a sum over pairs at n <= 16000): packed with the index into one
     // 64-bit word, key above index, a third of the memory traffic of the full entries.
     std::vector<std::uint64_t>& a = buf.packed;
-    std::vector<std::uint64_t>& b = buf.to_packed;
+    std::vector<std::uint64_t>& b = buf.packed_out;
     a.resize(n);
     b.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -90,26 +97,22 @@ void stable_sort_by_key(std::vector<Item>& items, KeyOf key_of) {
       a[i] = (packed << 32) | i;
     }
     for (int shift = 32; shift < 32 + 8 * static_cast<int>(varying.size()); shift += 8) {
-      std::array<std::size_t, 257> start{};
-      for (std::size_t i = 0; i < n; ++i) ++start[((a[i] >> shift) & 0xff) + 1];
-      for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
-      for (std::size_t i = 0; i < n; ++i) b[start[(a[i] >> shift) & 0xff]++] = a[i];
+      radix_detail::counting_pass(a, b, [shift](std::uint64_t r) { return (r >> shift) & 0xff; });
       a.swap(b);
     }
     for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(a[i]);
   } else {
-    from.resize(n);
-    to.resize(n);
-    for (std::size_t i = 0; i < n; ++i) from[i] = {key_of(items[i]), static_cast<std::uint32_t>(i)};
+    std::vector<Entry>& a = buf.entries;
+    std::vector<Entry>& b = buf.entries_out;
+    a.resize(n);
+    b.resize(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = {key_of(items[i]), static_cast<std::uint32_t>(i)};
     for (auto it = varying.rbegin(); it != varying.rend(); ++it) {
       const auto [w, shift] = *it;
-      std::array<std::size_t, 257> start{};
-      for (std::size_t i = 0; i < n; ++i) ++start[((from[i].key[w] >> shift) & 0xff) + 1];
-      for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
-      for (std::size_t i = 0; i < n; ++i) to[start[(from[i].key[w] >> shift) & 0xff]++] = from[i];
-      from.swap(to);
+      radix_detail::counting_pass(a, b, [w = w, shift = shift](const Entry& e) { return (e.key[w] >> shift) & 0xff; });
+      a.swap(b);
     }
-    for (std::size_t i = 0; i < n; ++i) order[i] = from[i].index;
+    for (std::size_t i = 0; i < n; ++i) order[i] = a[i].index;
   }
   // Gathered into a new array: each read is independent of the others, so the processor
   // overlaps their cache misses (following the permutation's cycles in place chains them, and
