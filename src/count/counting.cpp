@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/fraction_free_echelon.h"
+#include "count/integer_families.h"
 #include "geometry/closed_forms.h"
 
 namespace linkproof {
@@ -44,28 +46,19 @@ const RowEchelon<Rational>& grown_triangle_basis(int m) {
   return cache.echelon;
 }
 
-/// Adds the relations of `family` restricted to the free rates to `e` (m - 1 columns). Why that
-/// ranks the family modulo the triangle relations of m bodies, when those are known to leave
-/// exactly the rates of W = {x_ik = y_k - y_i : y_0 = 0} free (rank[triangles] =
-/// m(m-1)/2 - (m-1)). Every rate of W satisfies the triangle relations, so their span lies in
-/// the annihilator of W, and with that rank it *is* the annihilator. The rows of [triangles;
-/// family] modulo that span are then the rows of the family restricted to W (the quotient of the
-/// dual by the annihilator of W is the dual of W): rank[triangles; family] - rank[triangles] is
-/// the rank of the restricted family, an (m-1)-column system, and the same for the augmented
-/// matrices (W x R, with the constant kept). This replaces reducing the family against a copy of
-/// the C(m,3)-row triangle basis (most of `count` at large n) by O(entries) work per relation.
-void add_restricted_to_free_rates(RowEchelon<Rational>& e, const RelativeRates& rates,
-                                  const std::vector<RateRelation>& family) {
-  LINKPROOF_ASSERT(e.columns() == rates.bodies() - 1, "add_restricted_to_free_rates: column count");
-  for (const RateRelation& r : family) {  // column k-1 is y_k, k = 1..m-1
-    std::vector<std::pair<int, Rational>> entries;
-    for (const auto& [col, a] : r.row) {
-      const auto [i, k] = rates.bodies_of(col);  // a * x_ik = a * y_k - a * y_i
-      entries.emplace_back(k - 1, a);
-      if (i > 0) entries.emplace_back(i - 1, -a);
-    }
-    e.add(make_sparse_row(std::move(entries)), r.rhs);
-  }
+// Why ranking a family restricted to the free rates ranks it modulo the triangle relations of m
+// bodies, when those are known to leave exactly the rates of W = {x_ik = y_k - y_i : y_0 = 0}
+// free (rank[triangles] = m(m-1)/2 - (m-1)). Every rate of W satisfies the triangle relations,
+// so their span lies in the annihilator of W, and with that rank it *is* the annihilator. The
+// rows of [triangles; family] modulo that span are then the rows of the family restricted to W
+// (the quotient of the dual by the annihilator of W is the dual of W): rank[triangles; family] -
+// rank[triangles] is the rank of the restricted family, an (m-1)-column system, and the same for
+// the augmented matrices (W x R, with the constant kept). This replaces reducing the family
+// against a copy of the C(m,3)-row triangle basis (most of `count` at large n) by O(entries)
+// work per relation. The restricted rows are made integer (count/integer_families.h) and ranked
+// without fractions (core/fraction_free_echelon.h).
+void add_relations(FractionFreeEchelon& e, const std::vector<IntegerRelation>& family) {
+  for (const IntegerRelation& r : family) e.add(r.row, r.rhs);
 }
 
 }  // namespace
@@ -91,51 +84,40 @@ std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>&
                                                          const std::vector<Rational>& omega) {
   const int n = p.n();
   LINKPROOF_ASSERT(n >= 3 && static_cast<int>(omega.size()) == n, "count_fixed_side_relations: bad input");
-  BodyPolygon bp;
-  bp.polygon = p;
-  for (int b = 0; b < n; ++b) bp.bodies.push_back(b);
-  const RelativeRates rates(n);
-
   // Build the three families first (this throws at a dead centre before anything is ranked).
-  std::vector<RateRelation> velocity, eq22, companion;
-  for (int f = 1; f <= n; ++f) {
-    const BodyPolygon q = with_fixed_side(bp, f);
-    for (auto& r : velocity_relations(rates, q)) velocity.push_back(std::move(r));
-    auto acc = acceleration_relations(rates, q, omega);
-    eq22.push_back(std::move(acc[0]));
-    companion.push_back(std::move(acc[1]));
-  }
+  const IntegerFamilies families = integer_fixed_side_families(p, omega);
 
   const RankResult tri_state = count_triangle_relations(n);
-  // The restriction to W below rests on the triangles leaving exactly n - 1 rates free.
-  LINKPROOF_ASSERT(tri_state.rank == rates.columns() - (n - 1) && tri_state.consistent(),
+  // The restriction to W rests on the triangles leaving exactly n - 1 rates free.
+  const int rate_columns = n * (n - 1) / 2;
+  LINKPROOF_ASSERT(tri_state.rank == rate_columns - (n - 1) && tri_state.consistent(),
                    "count_fixed_side_relations: the triangle relations do not have rank (n-1)(n-2)/2");
 
   std::vector<FixedSideFamily> out;
   // `restricted` holds the family rows restricted to W (earlier relations `earlier` long, taking
   // `earlier_seconds`): the (22)+companion family continues from the (22) one (the rank of a set
   // of relations does not depend on their order), so the (22) rows are reduced once.
-  const auto rank_family = [&](std::string name, RowEchelon<Rational> restricted, long earlier, double earlier_seconds,
-                               const std::vector<RateRelation>& family) {
+  const auto rank_family = [&](std::string name, FractionFreeEchelon restricted, long earlier, double earlier_seconds,
+                               const std::vector<IntegerRelation>& family) {
     const auto t1 = std::chrono::steady_clock::now();
-    RowEchelon<Rational> e = std::move(restricted);
-    add_restricted_to_free_rates(e, rates, family);
+    FractionFreeEchelon e = std::move(restricted);
+    add_relations(e, family);
     FixedSideFamily fam;
     fam.name = std::move(name);
     fam.relations = earlier + static_cast<long>(family.size());
     fam.triangles = tri_state;
-    fam.combined = {tri_state.relations + fam.relations, rates.columns(), tri_state.rank + e.rank(),
+    fam.combined = {tri_state.relations + fam.relations, rate_columns, tri_state.rank + e.rank(),
                     tri_state.augmented_rank + e.augmented_rank(),
                     tri_state.seconds + earlier_seconds + seconds_since(t1)};
     out.push_back(std::move(fam));
     return e;
   };
-  const RowEchelon<Rational> none(n - 1);
-  rank_family("velocity (5),(6)", none, 0, 0, velocity);
-  const RowEchelon<Rational> with_eq22 = rank_family("acceleration (22)", none, 0, 0, eq22);
+  const FractionFreeEchelon none(n - 1);
+  rank_family("velocity (5),(6)", none, 0, 0, families.velocity);
+  const FractionFreeEchelon with_eq22 = rank_family("acceleration (22)", none, 0, 0, families.eq22);
   const long eq22_rows = out.back().relations;
   const double eq22_seconds = out.back().combined.seconds - tri_state.seconds;
-  rank_family("acceleration (22)+companion", with_eq22, eq22_rows, eq22_seconds, companion);
+  rank_family("acceleration (22)+companion", with_eq22, eq22_rows, eq22_seconds, families.companion);
   return out;
 }
 
