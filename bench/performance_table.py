@@ -7,6 +7,13 @@ run (python3-sympy), and writes one table row per entry of ROWS: row, goal, meas
 whether the goal is met (or missed by how much). Standard library only (SymPy is optional: its
 row says "not measured" without it).
 
+Ratio goals (x times faster than another benchmark, than SymPy) are judged on medians: the
+benchmarks of both sides run again, REPETITIONS times each in random interleaved order
+(--benchmark_repetitions, --benchmark_enable_random_interleaving), SymPy as often, and the
+ratio is that of the medians. One run of each side on a 2-core machine shared with other work
+gave ratios 30-60 % apart between regenerations; a drift of the machine during the run now
+reaches both sides alike.
+
 Adding a row is adding an entry to ROWS. A row whose benchmark is absent from the binary (for
 instance the proof, count and mechanism rows before their benchmarks exist) is listed as
 "not measured yet".
@@ -90,17 +97,45 @@ END = "<!-- performance-table:end -->"
 
 UNIT_SECONDS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 
+# Repetitions of each side of a ratio goal (and of the SymPy derivation).
+REPETITIONS = 5
 
-def run_benchmarks(binary):
-    patterns = [r["bench"].lstrip("^").split("(")[0].rstrip("$") for r in ROWS]
-    for r in ROWS:
-        if r["goal"] and r["goal"][0] == "faster_than":
-            patterns.append(r["goal"][1].lstrip("^").split("(")[0].rstrip("$"))
-    bench_filter = "^(" + "|".join(sorted(set(patterns))) + ")"
-    cmd = [binary, "--benchmark_filter=" + bench_filter, "--benchmark_format=json"]
+
+def bench_pattern(regex):
+    return regex.lstrip("^").split("(")[0].rstrip("$")
+
+
+def run(binary, patterns, extra=(), whole_names=False):
+    """whole_names: a pattern matches a name only up to a "/" or the end (BM_CheckExact/10 is
+    not BM_CheckExact/100); otherwise as a prefix (BM_Prove is every BM_Prove...)."""
+    bench_filter = "^(" + "|".join(sorted(set(patterns))) + ")" + ("(/|$)" if whole_names else "")
+    cmd = [binary, "--benchmark_filter=" + bench_filter, "--benchmark_format=json", *extra]
     print("running:", " ".join(cmd), file=sys.stderr)
     out = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, text=True).stdout
     return json.loads(out)
+
+
+def ratio_patterns():
+    """The benchmarks on either side of a ratio goal."""
+    patterns = []
+    for r in ROWS:
+        goal = r["goal"]
+        if goal and goal[0] == "faster_than":
+            patterns += [bench_pattern(r["bench"]), bench_pattern(goal[1])]
+        if goal and goal[0] == "faster_than_sympy":
+            patterns.append(bench_pattern(r["bench"]))
+    return patterns
+
+
+def run_benchmarks(binary):
+    """One run of every row's benchmark, then the ratio rows' benchmarks repeated and
+    interleaved; the medians of the second run are added as run_type "aggregate"."""
+    data = run(binary, [bench_pattern(r["bench"]) for r in ROWS])
+    repeated = run(binary, ratio_patterns(),
+                   [f"--benchmark_repetitions={REPETITIONS}", "--benchmark_enable_random_interleaving=true",
+                    "--benchmark_report_aggregates_only=true"], whole_names=True)
+    data["benchmarks"] += [b for b in repeated["benchmarks"] if b.get("aggregate_name") == "median"]
+    return data
 
 
 def sympy_derivation_seconds(n=24):
@@ -111,6 +146,8 @@ def sympy_derivation_seconds(n=24):
         import sympy
     except ImportError:
         return None
+    from sympy.core.cache import clear_cache
+    clear_cache()  # a repetition must not reuse the previous one's cached expressions
     start = time.perf_counter()
     x = sympy.symbols(f"x1:{n}")
     y = sympy.symbols(f"y1:{n}")
@@ -135,10 +172,25 @@ def sympy_derivation_seconds(n=24):
     return time.perf_counter() - start
 
 
+def sympy_median_seconds(n=24):
+    times = [sympy_derivation_seconds(n) for _ in range(REPETITIONS)]
+    return None if None in times else sorted(times)[len(times) // 2]
+
+
 def find(benchmarks, pattern):
     rx = re.compile(pattern)
     for b in benchmarks:
         if b.get("run_type", "iteration") == "iteration" and rx.search(b["name"]):
+            return b
+    return None
+
+
+def find_median(benchmarks, pattern):
+    """The median of the repeated run (its name is the benchmark's with "_median"); None if the
+    run was not repeated (a saved --json of a plain run)."""
+    rx = re.compile(pattern.rstrip("$").replace("(/|$)", "") + r"(/[^_]*)?_median$")
+    for b in benchmarks:
+        if b.get("aggregate_name") == "median" and rx.search(b["name"]):
             return b
     return None
 
@@ -181,17 +233,24 @@ def evaluate(row, benchmarks, sympy_s):
         measured += f"; slowest claim {fmt_time(value)}"
         return measured, "met" if value <= goal[2] else f"missed: {value / goal[2]:.2g}x the goal"
     if kind == "faster_than":
-        other = find(benchmarks, goal[1])
+        mine, other = find_median(benchmarks, row["bench"]), find_median(benchmarks, goal[1])
+        of = f"medians of {REPETITIONS} interleaved runs"
+        if mine is None or other is None:  # a saved plain run: one run each
+            mine, other, of = b, find(benchmarks, goal[1]), "one run each"
         if other is None:
             return measured, "reference not measured"
-        ratio = seconds(other) / t
-        measured += f"; {ratio:.3g}x faster than {other['name']}"
+        ratio = seconds(other) / seconds(mine)
+        name = other["name"].removesuffix("_median")
+        measured = f"{fmt_time(seconds(mine))}; {ratio:.3g}x faster than {name} ({of})"
         return measured, "met" if ratio >= goal[2] else f"missed: {ratio:.2g}x, goal {goal[2]}x"
     if kind == "faster_than_sympy":
         if sympy_s is None:
             return measured + "; SymPy not measured", "-"
+        mine = find_median(benchmarks, row["bench"])
+        of = f"medians of {REPETITIONS} runs" if mine is not None else "one run each"
+        t = seconds(mine) if mine is not None else t
         ratio = sympy_s / t
-        measured += f"; SymPy {fmt_time(sympy_s)}, {ratio:,.0f}x"
+        measured = f"{fmt_time(t)}; SymPy {fmt_time(sympy_s)}, {ratio:,.0f}x ({of})"
         return measured, "met" if ratio >= goal[1] else f"missed: {ratio:.2g}x, goal {goal[1]}x"
     raise ValueError(f"unknown goal {kind}")
 
@@ -206,7 +265,7 @@ def table(benchmarks, sympy_s, context):
     lines = [
         f"Measured {context.get('date', '?')} on {context.get('host_name', '?')} "
         f"({context.get('num_cpus', '?')} CPUs, Google Benchmark library built as {context.get('library_build_type', '?')}), "
-        "one run of `bash bench/make_performance_table.sh`.",
+        "one run of `bash bench/make_performance_table.sh` (ratios: medians of repeated runs).",
         "",
         "| row | benchmark | goal | measured | goal met |",
         "|---|---|---|---|---|",
@@ -224,10 +283,14 @@ def main():
     ap.add_argument("--json", help="a saved --benchmark_format=json output instead of running")
     ap.add_argument("--doc", default="docs/performance.md", help="the page whose table is rewritten")
     ap.add_argument("--no-sympy", action="store_true", help="skip the SymPy timing")
+    ap.add_argument("--save-json", help="also write the benchmark results (both runs) to this file")
     args = ap.parse_args()
 
     data = json.load(open(args.json)) if args.json else run_benchmarks(args.bench)
-    sympy_s = None if args.no_sympy else sympy_derivation_seconds(24)
+    if args.save_json:
+        with open(args.save_json, "w") as f:
+            json.dump(data, f, indent=1)
+    sympy_s = None if args.no_sympy else sympy_median_seconds(24)
     text = table(data.get("benchmarks", []), sympy_s, data.get("context", {}))
 
     doc = open(args.doc).read() if os.path.exists(args.doc) else f"# Performance\n\n{BEGIN}\n{END}\n"

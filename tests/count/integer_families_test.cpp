@@ -12,6 +12,7 @@
 #include "check/random_polygon.h"
 #include "count/counting.h"
 #include "support/polygons.h"
+#include "support/rational_families.h"
 
 namespace linkproof {
 namespace {
@@ -105,18 +106,8 @@ TEST(IntegerFamilies, RanksAreThoseOfTheRationalRelationsOnTheTrianglesAlsoWhenI
     SCOPED_TRACE("seed " + std::to_string(seed) + ", n " + std::to_string(n) + ", family " + c.family);
     const auto fams = count_fixed_side_relations(c.polygon, omega);
     const RelativeRates rates(n);
-    BodyPolygon bp;
-    bp.polygon = c.polygon;
-    for (int b = 0; b < n; ++b) bp.bodies.push_back(b);
-    std::vector<RateRelation> velocity, eq22, acceleration;
-    for (int f = 1; f <= n; ++f) {
-      const BodyPolygon q = with_fixed_side(bp, f);
-      for (auto& r : velocity_relations(rates, q)) velocity.push_back(r);
-      const auto acc = acceleration_relations(rates, q, omega);
-      eq22.push_back(acc[0]);
-      acceleration.insert(acceleration.end(), acc.begin(), acc.end());
-    }
-    const std::vector<const std::vector<RateRelation>*> families{&velocity, &eq22, &acceleration};
+    const test::RationalFamilies ref = test::rational_families(c.polygon, omega);
+    const std::vector<const std::vector<RateRelation>*> families{&ref.velocity, &ref.eq22, &ref.acceleration};
     for (size_t k = 0; k < families.size(); ++k) {
       RowEchelon<Rational> e(rates.columns());
       add_and_rank(e, triangle_relations(rates));

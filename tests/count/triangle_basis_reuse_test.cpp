@@ -5,6 +5,7 @@
 
 #include "check/random_polygon.h"
 #include "count/counting.h"
+#include "support/rational_families.h"
 
 namespace linkproof {
 namespace {
@@ -40,18 +41,8 @@ TEST(TriangleBasisReuse, FamilyRanksAreThoseOfRankingEachFamilyFromTheTriangles)
     const auto fams = count_fixed_side_relations(c.polygon, omega);
     // Reference: every family ranked on a fresh triangle basis, rows in the original order.
     const RelativeRates rates(n);
-    BodyPolygon bp;
-    bp.polygon = c.polygon;
-    for (int b = 0; b < n; ++b) bp.bodies.push_back(b);
-    std::vector<RateRelation> velocity, eq22, acceleration;
-    for (int f = 1; f <= n; ++f) {
-      const BodyPolygon q = with_fixed_side(bp, f);
-      for (auto& r : velocity_relations(rates, q)) velocity.push_back(r);
-      const auto acc = acceleration_relations(rates, q, omega);
-      eq22.push_back(acc[0]);
-      acceleration.insert(acceleration.end(), acc.begin(), acc.end());
-    }
-    const std::vector<const std::vector<RateRelation>*> families{&velocity, &eq22, &acceleration};
+    const test::RationalFamilies ref = test::rational_families(c.polygon, omega);
+    const std::vector<const std::vector<RateRelation>*> families{&ref.velocity, &ref.eq22, &ref.acceleration};
     ASSERT_EQ(fams.size(), families.size());
     for (size_t k = 0; k < families.size(); ++k) {
       RowEchelon<Rational> e(rates.columns());
