@@ -6,6 +6,7 @@
 
 #include "dijksman1966_counting.h"
 #include "linkproof/core/error.h"
+#include "support/polygons.h"
 
 namespace linkproof {
 namespace {
@@ -13,7 +14,7 @@ namespace {
 using dijksman1966::fig5_eightbar;
 using dijksman1966::kFig5Polygons;
 
-Rational q(long p, long d) { return Rational(p) / Rational(d); }
+using test::q;
 
 CompoundCount count_fig5(const std::string& loops) {
   return count_compound(fig5_eightbar(), parse_polygon_list(loops, "test", "loops"));

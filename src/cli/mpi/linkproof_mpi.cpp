@@ -25,6 +25,7 @@
 #include "batch/scene_directory.h"
 #include "batch/topology_sweep_job.h"
 #include "check/sweep_tally.h"
+#include "core/large_blocks.h"
 #include "exit_status.h"
 #include "report/json_report.h"
 #include "report/text_report.h"
@@ -174,6 +175,7 @@ int run(int argc, char** argv, int rank, int size) {
 }  // namespace linkproof::cli
 
 int main(int argc, char** argv) {
+  linkproof::keep_large_blocks_for_reuse();  // as the CLI (core/large_blocks.h)
   MPI_Init(&argc, &argv);
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
