@@ -13,13 +13,13 @@ namespace {
 
 using nlohmann::json;
 
-bool is_exact(const TopologySampleRun& run) { return run.options.arithmetic == Arithmetic::Exact; }
+bool sampled_exactly(const TopologySampleRun& run) { return run.options.arithmetic == Arithmetic::Exact; }
 
 std::string rests_on(const TopologySampleRun& run) {
   return fmt::format("{} on random configurations of the topology of {} (seed {}; small-integer "
                      "positions, rational unit axes, rational input rates); holds_on_samples is NOT a proof for "
                      "every configuration",
-                     is_exact(run) ? std::string("exact evaluation")
+                     sampled_exactly(run) ? std::string("exact evaluation")
                                    : fmt::format("evaluation in {} with derived error bounds (a failure confirmed "
                                                  "exactly)",
                                                  to_string(run.options.arithmetic)),
@@ -30,7 +30,7 @@ std::string scope(const SampleResult& r, const TopologySampleRun& run) {
   switch (r.verdict) {
     case TopologyVerdict::HoldsOnSamples:
       return fmt::format("{} on {} random configuration{}{} ({} undefined{}); not a proof",
-                         is_exact(run) ? std::string("exactly equal")
+                         sampled_exactly(run) ? std::string("exactly equal")
                                        : fmt::format("equal within the derived error bound in {}",
                                                      to_string(run.options.arithmetic)),
                          r.compared, r.compared == 1 ? "" : "s",
@@ -133,9 +133,9 @@ void write_text(std::ostream& out, const TopologySampleRun& run, const ClaimsSta
              run.claims.size(), run.topology, ok, static_cast<int>(run.claims.size()) - ok);
   fmt::print(out, "configurations: {} drawn, {} skipped (singular velocity system{}), {} solved; seed {}, count {}; "
                   "{}{:.3f} s\n",
-             run.generated, run.singular, is_exact(run) ? "" : " or undecided in floating point", run.solved,
+             run.generated, run.singular, sampled_exactly(run) ? "" : " or undecided in floating point", run.solved,
              run.options.seed, run.options.count,
-             is_exact(run) ? std::string() : fmt::format("arithmetic {}; ", to_string(run.options.arithmetic)),
+             sampled_exactly(run) ? std::string() : fmt::format("arithmetic {}; ", to_string(run.options.arithmetic)),
              run.seconds);
   if (run.degenerate > 0)
     fmt::print(out, "{} failure(s) skipped on degenerate configurations the scene reader refuses\n", run.degenerate);
