@@ -15,7 +15,7 @@
 // The right-hand side is one more column that is never a pivot; a row whose coefficients reduce
 // to 0 with a nonzero right-hand side makes the system inconsistent, as in RowEchelon.
 // The rank over the integers' fraction field is the rank over the rationals: the result is the
-// same rank RowEchelon<Rational> computes (tests/unit/fraction_free_echelon_test.cpp compares).
+// same rank RowEchelon<Rational> computes (tests/core/fraction_free_echelon_test.cpp compares).
 #pragma once
 
 #include <cln/integer.h>

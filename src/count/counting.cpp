@@ -89,7 +89,7 @@ std::vector<FixedSideFamily> count_fixed_side_relations(const Polygon<Rational>&
 
   const RankResult tri_state = count_triangle_relations(n);
   // The restriction to W rests on the triangles leaving exactly n - 1 rates free.
-  const int rate_columns = n * (n - 1) / 2;
+  const int rate_columns = RelativeRates(n).columns();
   LINKPROOF_ASSERT(tri_state.rank == rate_columns - (n - 1) && tri_state.consistent(),
                    "count_fixed_side_relations: the triangle relations do not have rank (n-1)(n-2)/2");
 
