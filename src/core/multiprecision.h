@@ -136,6 +136,9 @@ struct TrackedTraits<MpFloat<Digits>> {
   /// CLN rounds each operation correctly (to nearest): |x - v| <= u |v| for v = RN(x), plus
   /// the underflow term (0 while CLN throws on underflow).
   static WideBound rounding_error(const F& v) { return unit_roundoff() * magnitude(v) + underflow_term(); }
+  /// CLN has no gradual underflow: a sum that rounds to 0 is not known to be exact.
+  static WideBound sum_rounding_error(const F& v) { return rounding_error(v); }
+  static bool is_zero(const F& v) { return cln::zerop(v.value()); }
   /// magnitude(v) is >= |v| (1 + 2^-54) (from_float_up: a 53-bit mantissa moved one ulp up),
   /// and |x| <= |v| (1 + u) with u <= 2^-128: no extra step is needed.
   static WideBound quotient_magnitude(const F& v) { return magnitude(v); }

@@ -63,6 +63,62 @@ void check_edges(std::uint64_t seed) {
 TEST(TrackedWorstCase, EdgesOfTheOperandIntervalsAreEnclosedInDouble) { check_edges<double>(20261124); }
 TEST(TrackedWorstCase, EdgesOfTheOperandIntervalsAreEnclosedInLongDouble) { check_edges<long double>(20261124); }
 
+// + - * take one upward step for the whole rule when the radius computed in round-to-nearest is
+// at least the least normal number (fast_radius), and one per operation below it: operands
+// whose midpoints, radii and products lie around that threshold, with products that underflow,
+// exercise both paths and the step between them. Every sign, and exact zeros among the radii.
+template <class F>
+void check_edges_near_the_least_normal(std::uint64_t seed, int trials) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> unit(1, 2);
+  const int least = std::numeric_limits<F>::min_exponent - 1;  // the least normal is 2^least
+  const int p = std::numeric_limits<F>::digits;
+  const auto draw = [&](int lo, int hi) {  // +-[1, 2) 2^k, k in [lo, hi]; sometimes 0
+    if (g() % 8 == 0) return F(0);
+    const F x = std::ldexp(static_cast<F>(unit(g)), lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1)));
+    return g() % 2 ? x : -x;
+  };
+  for (int trial = 0; trial < trials; ++trial) {
+    // Midpoints whose product, or whose u |v|, is near the least normal; radii just around it.
+    const bool products = trial % 2 == 0;
+    const int mid = products ? least / 2 : least + p;
+    const F va = draw(mid - 4, mid + 4), vb = draw(mid - 4, mid + 4);
+    const F ea = std::abs(draw(least - 3, least + 3)), eb = std::abs(draw(mid - 3 - p, mid + 3));
+    const Tracked<F> a{va, ea}, b{vb, eb};
+    const Rational xa = exact(va), xb = exact(vb), ra = exact(ea), rb = exact(eb);
+    for (const int sa : {-1, 1})
+      for (const int sb : {-1, 1}) {
+        const Rational ca = xa + sa * ra, cb = xb + sb * rb;  // a corner of the operand box
+        ASSERT_TRUE(worst_case_encloses(a + b, ca + cb)) << "seed " << seed << " trial " << trial;
+        ASSERT_TRUE(worst_case_encloses(a - b, ca - cb)) << "seed " << seed << " trial " << trial;
+        ASSERT_TRUE(worst_case_encloses(a * b, ca * cb)) << "seed " << seed << " trial " << trial;
+      }
+  }
+}
+// Below the least normal number a rule's radius can lose up to half the least subnormal in each
+// of its underflowing products and in its midpoint, more than the one step of fast_radius adds:
+// here |va| eb and (|vb| + eb) ea both round 1.4999.. denorm_min down to denorm_min, and the
+// midpoint, subnormal, loses 0.36 denorm_min: the exact radius is about 3.36 denorm_min, and
+// one step up from the 2 denorm_min computed to nearest is 3. Such radii take one upward step
+// per operation.
+TEST(TrackedWorstCase, UnderflowLossesOfEveryTermAreEnclosedBelowTheLeastNormal) {
+  constexpr double kEta = std::numeric_limits<double>::denorm_min();
+  const double va = 1.4999, vb = std::ldexp(1.0, -1060), ea = std::ldexp(1.4999, -14), eb = kEta;
+  const Tracked<double> a{va, ea}, b{vb, eb};
+  const Tracked<double> p = a * b;
+  const Rational corner = (exact(va) + exact(ea)) * (exact(vb) + exact(eb));
+  EXPECT_TRUE(worst_case_encloses(p, corner)) << "radius " << format_float(p.e) << " needed "
+                                              << format_rational(cln::abs(corner - exact(p.v)) / exact(kEta))
+                                              << " denorm_min";
+}
+
+TEST(TrackedWorstCase, EdgesNearTheLeastNormalNumberAreEnclosedInDouble) {
+  check_edges_near_the_least_normal<double>(20261127, 10000);
+}
+TEST(TrackedWorstCase, EdgesNearTheLeastNormalNumberAreEnclosedInLongDouble) {
+  check_edges_near_the_least_normal<long double>(20261127, 1500);  // 16,000-bit rationals
+}
+
 // A long double input below double's range was converted through double: midpoint 0 and a
 // radius of 2^-16445 for a value of 2^-1100 / 3.
 TEST(TrackedWorstCase, LongDoubleInputsOutsideDoublesRangeAreConvertedCorrectly) {
