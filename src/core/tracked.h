@@ -148,15 +148,34 @@ struct Tracked {
 };
 
 
+namespace tracked_detail {
+// The rules with one upward step per radius operation: every radius for CLN, and IEEE radii
+// below the least normal number (rare). Kept out of line so that the fast path inlines.
+template <class F>
+[[gnu::noinline]] typename TrackedTraits<F>::Radius sum_radius(const Tracked<F>& a, const Tracked<F>& b, const F& v) {
+  using T = TrackedTraits<F>;
+  return T::add_up(T::add_up(a.e, b.e), T::sum_rounding_error(v));
+}
+template <class F>
+[[gnu::noinline]] typename TrackedTraits<F>::Radius product_radius(const Tracked<F>& a, const Tracked<F>& b, const F& v) {
+  using T = TrackedTraits<F>;
+  // A zero factor makes the midpoint's product an exact 0.
+  const bool exact = T::is_zero(a.v) || T::is_zero(b.v);
+  return T::add_up(T::add_up(T::mul_up(T::magnitude(a.v), b.e), T::mul_up(T::add_up(T::magnitude(b.v), b.e), a.e)),
+                   exact ? typename T::Radius{} : T::rounding_error(v));
+}
+}  // namespace tracked_detail
+
 template <class F>
 Tracked<F> operator+(const Tracked<F>& a, const Tracked<F>& b) {
   using T = TrackedTraits<F>;
   F v = a.v + b.v;
   if constexpr (std::floating_point<F>) {
     const F h = (a.e + b.e) + T::unit_roundoff() * std::abs(v);
-    if (T::fast_radius_applies(h)) return {v, T::fast_radius(h)};  // a NaN falls through
+    if (T::fast_radius_applies(h)) [[likely]] return {v, T::fast_radius(h)};  // a NaN falls through
+    if (h == 0 && v == 0) return {v, F(0)};  // exact operands whose sum is an exact 0 (see sum_rounding_error)
   }
-  auto e = T::add_up(T::add_up(a.e, b.e), T::sum_rounding_error(v));
+  auto e = tracked_detail::sum_radius(a, b, v);
   return {std::move(v), std::move(e)};
 }
 template <class F>
@@ -165,9 +184,10 @@ Tracked<F> operator-(const Tracked<F>& a, const Tracked<F>& b) {
   F v = a.v - b.v;
   if constexpr (std::floating_point<F>) {
     const F h = (a.e + b.e) + T::unit_roundoff() * std::abs(v);
-    if (T::fast_radius_applies(h)) return {v, T::fast_radius(h)};
+    if (T::fast_radius_applies(h)) [[likely]] return {v, T::fast_radius(h)};
+    if (h == 0 && v == 0) return {v, F(0)};
   }
-  auto e = T::add_up(T::add_up(a.e, b.e), T::sum_rounding_error(v));
+  auto e = tracked_detail::sum_radius(a, b, v);
   return {std::move(v), std::move(e)};
 }
 template <class F>
@@ -178,16 +198,14 @@ Tracked<F> operator-(const Tracked<F>& a) {
 template <class F>
 Tracked<F> operator*(const Tracked<F>& a, const Tracked<F>& b) {
   using T = TrackedTraits<F>;
-  using Radius = typename T::Radius;
   F v = a.v * b.v;
   if constexpr (std::floating_point<F>) {
     const F h = (std::abs(a.v) * b.e + (std::abs(b.v) + b.e) * a.e) + T::unit_roundoff() * std::abs(v);
-    if (T::fast_radius_applies(h)) return {v, T::fast_radius(h)};
+    if (T::fast_radius_applies(h)) [[likely]] return {v, T::fast_radius(h)};
+    // An exact 0 factor (radius 0) and a finite other one (h is then 0, not NaN): an exact 0.
+    if (h == 0 && ((a.v == 0 && a.e == 0) || (b.v == 0 && b.e == 0))) return {v, F(0)};
   }
-  // A zero factor makes the midpoint's product an exact 0.
-  const bool exact = T::is_zero(a.v) || T::is_zero(b.v);
-  auto e = T::add_up(T::add_up(T::mul_up(T::magnitude(a.v), b.e), T::mul_up(T::add_up(T::magnitude(b.v), b.e), a.e)),
-                     exact ? Radius{} : T::rounding_error(v));
+  auto e = tracked_detail::product_radius(a, b, v);
   return {std::move(v), std::move(e)};
 }
 /// |a/b - va/vb| <= (ea + |va/vb| eb) / (|vb| - eb) when eb < |vb|; otherwise unbounded.

@@ -110,6 +110,11 @@ TEST(TrackedWorstCase, UnderflowLossesOfEveryTermAreEnclosedBelowTheLeastNormal)
   EXPECT_TRUE(worst_case_encloses(p, corner)) << "radius " << format_float(p.e) << " needed "
                                               << format_rational(cln::abs(corner - exact(p.v)) / exact(kEta))
                                               << " denorm_min";
+  // A zero midpoint with a subnormal radius is not an exact 0: 0.3 denorm_min rounds to 0 in the
+  // computed radius, and the product must still have a positive one.
+  const Tracked<double> tiny{0.0, kEta}, c{0.3, 0};
+  EXPECT_TRUE(worst_case_encloses(tiny * c, (exact(kEta) * exact(0.3))));
+  EXPECT_TRUE(worst_case_encloses(c * tiny, -(exact(kEta) * exact(0.3))));
 }
 
 TEST(TrackedWorstCase, EdgesNearTheLeastNormalNumberAreEnclosedInDouble) {
