@@ -112,8 +112,8 @@ TEST(TopologySamplingArith, ATrueClaimUndefinedOnEverySampleIsNotAPass) {
 )yaml";
   // Exactly, omega_3 - omega_3 is 0: undefined. In double it is 0 with a radius (the bound cannot
   // tell it from a small number), so the division's bound is unbounded: inconclusive; except
-  // where omega_3 itself is an exact 0 with radius 0 (made from exact zeros, e.g. equal integer
-  // coordinates): two of this seed's configurations, undefined in double too.
+  // where omega_3 was computed exactly (radius 0): then omega_3 - omega_3 is an exact 0 in
+  // double too, undefined (two of this seed's configurations), and the claim is undefined.
   for (const auto& [arith, verdict] : {std::pair{"exact", "undefined"}, std::pair{"double", "undefined"}}) {
     const nlohmann::json j = sample_json(path, kFourbar, arith, 5, 1);
     EXPECT_EQ(j["claims"][0]["verdict"], verdict) << arith;
