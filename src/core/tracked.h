@@ -147,7 +147,6 @@ struct Tracked {
   explicit Tracked(int exact_integer) : v(F(exact_integer)), e{} {}
 };
 
-
 namespace tracked_detail {
 // The rules with one upward step per radius operation: every radius for CLN, and IEEE radii
 // below the least normal number (rare). Kept out of line so that the fast path inlines.
@@ -179,20 +178,13 @@ Tracked<F> operator+(const Tracked<F>& a, const Tracked<F>& b) {
   return {std::move(v), std::move(e)};
 }
 template <class F>
-Tracked<F> operator-(const Tracked<F>& a, const Tracked<F>& b) {
-  using T = TrackedTraits<F>;
-  F v = a.v - b.v;
-  if constexpr (std::floating_point<F>) {
-    const F h = (a.e + b.e) + T::unit_roundoff() * std::abs(v);
-    if (T::fast_radius_applies(h)) [[likely]] return {v, T::fast_radius(h)};
-    if (h == 0 && v == 0) return {v, F(0)};
-  }
-  auto e = tracked_detail::sum_radius(a, b, v);
-  return {std::move(v), std::move(e)};
-}
-template <class F>
 Tracked<F> operator-(const Tracked<F>& a) {
   return {-a.v, a.e};
+}
+/// a + (-b): negation is exact, and a - b and a + (-b) round to the same F.
+template <class F>
+Tracked<F> operator-(const Tracked<F>& a, const Tracked<F>& b) {
+  return a + -b;
 }
 /// |ab - va vb| = |va db + (vb + db) da| <= |va| eb + (|vb| + eb) ea.
 template <class F>
