@@ -89,6 +89,7 @@ bool as_small_fraction(const Rational& q, double& p, double& d);
 /// correctly rounded; the remainder p - v d of a correctly rounded quotient is a double (no
 /// underflow: |v| >= 2^-53) and fma computes it exactly, so |p/d - v| = |r| / d, rounded up.
 inline Tracked<double> tracked_from_small_fraction(double p, double d) {
+  if (d == 1) return {p, 0.0};  // an integer (most sampled coordinates): no division to wait for
   const double v = p / d;
   const double r = std::fma(-v, d, p);
   return {v, r == 0 ? 0.0 : next_up(std::abs(r) / d)};

@@ -166,7 +166,7 @@ template <class F>
 }  // namespace tracked_detail
 
 template <class F>
-Tracked<F> operator+(const Tracked<F>& a, const Tracked<F>& b) {
+[[gnu::always_inline]] inline Tracked<F> operator+(const Tracked<F>& a, const Tracked<F>& b) {
   using T = TrackedTraits<F>;
   F v = a.v + b.v;
   if constexpr (std::floating_point<F>) {
@@ -178,17 +178,17 @@ Tracked<F> operator+(const Tracked<F>& a, const Tracked<F>& b) {
   return {std::move(v), std::move(e)};
 }
 template <class F>
-Tracked<F> operator-(const Tracked<F>& a) {
+[[gnu::always_inline]] inline Tracked<F> operator-(const Tracked<F>& a) {
   return {-a.v, a.e};
 }
 /// a + (-b): negation is exact, and a - b and a + (-b) round to the same F.
 template <class F>
-Tracked<F> operator-(const Tracked<F>& a, const Tracked<F>& b) {
+[[gnu::always_inline]] inline Tracked<F> operator-(const Tracked<F>& a, const Tracked<F>& b) {
   return a + -b;
 }
 /// |ab - va vb| = |va db + (vb + db) da| <= |va| eb + (|vb| + eb) ea.
 template <class F>
-Tracked<F> operator*(const Tracked<F>& a, const Tracked<F>& b) {
+[[gnu::always_inline]] inline Tracked<F> operator*(const Tracked<F>& a, const Tracked<F>& b) {
   using T = TrackedTraits<F>;
   F v = a.v * b.v;
   if constexpr (std::floating_point<F>) {
@@ -217,8 +217,12 @@ Tracked<F> operator/(const Tracked<F>& a, const Tracked<F>& b) {
   F v = a.v / b.v;
   // 0 / b is an exact 0 (b's margin is positive, so b is not 0).
   const bool exact = T::is_zero(a.v);
-  auto e = T::add_up(T::div_up(T::add_up(a.e, T::mul_up(exact ? Radius{} : T::quotient_magnitude(v), b.e)), margin),
-                     exact ? Radius{} : T::rounding_error(v));
+  const auto spread = T::add_up(a.e, T::mul_up(exact ? Radius{} : T::quotient_magnitude(v), b.e));
+  // Exact operands (IEEE; the common case of sampled coordinates) spread nothing: div_up would
+  // return the 0 as it is, after a second division to wait for. A NaN spread is not 0.
+  bool spreads = true;
+  if constexpr (std::floating_point<F>) spreads = spread != 0;
+  auto e = T::add_up(spreads ? T::div_up(spread, margin) : Radius{}, exact ? Radius{} : T::rounding_error(v));
   return {std::move(v), std::move(e)};
 }
 template <class F>

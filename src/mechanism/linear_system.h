@@ -21,6 +21,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/dense_matrix.h"
 #include "core/row_echelon.h"
 #include "core/scalar.h"
 
@@ -33,14 +34,10 @@ struct LinearSolution {
   std::vector<T> x;
 };
 
-template <class T>
-using DenseMatrix = std::vector<std::vector<T>>;
-
 /// The exact route: sparse reduced row echelon form (rank, consistency, the unique solution).
 template <class T>
 LinearSolution<T> solve_linear_system_sparse(const DenseMatrix<T>& A, const std::vector<T>& b) {
-  const size_t m = A.size();
-  const size_t n = m == 0 ? 0 : A[0].size();
+  const size_t m = A.size(), n = A.cols();
   RowEchelon<T> e(static_cast<int>(n));
   for (size_t r = 0; r < m; ++r) {
     SparseRow<T> row;
@@ -121,7 +118,7 @@ class LinearSystem {
     T factor{};
   };
 
-  size_t columns() const { return a_.empty() ? 0 : a_[0].size(); }
+  size_t columns() const { return a_.cols(); }
 
   // A pivot counts as zero when |p| <= max(m, n) * u * max|A_ij| (see the file comment).
   bool negligible(const T& v) const { return std::abs(ScalarTraits<T>::to_double(v)) <= threshold_; }
@@ -136,8 +133,8 @@ class LinearSystem {
   void eliminate(bool solvable) {
     const size_t m = a_.size(), n = columns();
     double amax = 0;
-    for (const auto& row : a_)
-      for (const auto& v : row) amax = std::max(amax, std::abs(ScalarTraits<T>::to_double(v)));
+    for (size_t r = 0; r < m; ++r)
+      for (const T& v : a_[r]) amax = std::max(amax, std::abs(ScalarTraits<T>::to_double(v)));
     threshold_ = static_cast<double>(std::max(m, n)) * std::numeric_limits<double>::epsilon() / 2 * amax;
     if (solvable) steps_.reserve(m * std::min(m, n));
     pivot_col_.reserve(std::min(m, n));
@@ -154,7 +151,7 @@ class LinearSystem {
       }
       if (best == m) continue;
       if (best != row) {
-        std::swap(a_[row], a_[best]);
+        a_.swap_rows(row, best);
         if (solvable) steps_.push_back({true, row, best, T{}});
       }
       nonzero.clear();

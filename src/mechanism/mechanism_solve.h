@@ -67,9 +67,8 @@ void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inpu
       throw InputError(source, fmt::format("mechanism.inputs[{}]", k),
                        in.kind == MechanismInput::Kind::Link ? "an input on the ground link: its rates are 0 by definition"
                                                              : "a slider input on a revolute joint");
-    std::vector<T> row(static_cast<size_t>(g.unknown_count()), from_int<T>(0));
-    row[static_cast<size_t>(col)] = from_int<T>(1);
-    A.push_back(std::move(row));
+    if (A.empty() && A.cols() == 0) A = DenseMatrix<T>::with_columns(static_cast<size_t>(g.unknown_count()));
+    A.add_row(from_int<T>(0))[static_cast<size_t>(col)] = from_int<T>(1);
   }
   append_input_rates(inputs, b, second_order, values);
 }
@@ -100,8 +99,9 @@ MechanismSolution<T> solve_mechanism(const Linkage& g, const std::vector<Mechani
                      fmt::format("the mechanism has mobility {} (rank of the velocity constraints {}, {} unknowns; "
                                  "Gruebler count {}) and needs {} input(s), got {}",
                                  s.mobility, s.rank, N, g.grubler_mobility(), s.mobility, inputs.size()));
-  std::vector<T> bv(constraints, from_int<T>(0));
+  std::vector<T> bv;
   bv.reserve(constraints + inputs.size());
+  bv.assign(constraints, from_int<T>(0));
   A.reserve(constraints + inputs.size());
   append_input_rows(g, inputs, A, bv, false, source, values);
   // Velocity and acceleration: one matrix (the constraints and the input rows), two right-hand sides.

@@ -15,6 +15,7 @@
 // the linkage's exact values converted to T, or values already in T (Tracked data, symbols).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/scalar.h"
@@ -36,10 +37,12 @@ Vec2<T> joint_difference(const Linkage& g, int from, int to, const JointGeometry
 template <class T>
 DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const JointGeometry<T>& geo = {}) {
   const size_t N = static_cast<size_t>(g.unknown_count());
-  DenseMatrix<T> A;
+  DenseMatrix<T> A = DenseMatrix<T>::with_columns(N);
   A.reserve(static_cast<size_t>(g.constraint_count()));
+  const T zero = from_int<T>(0);
   for (const LinkageLoop& loop : g.loops()) {
-    std::vector<T> rx(N, from_int<T>(0)), ry(N, from_int<T>(0));
+    A.add_row(zero), A.add_row(zero);
+    const std::span<T> rx = A[A.size() - 2], ry = A[A.size() - 1];
     const size_t k = loop.crossings.size();
     for (size_t i = 0; i < k; ++i) {
       const JointCrossing& c = loop.crossings[i];
@@ -56,15 +59,12 @@ DenseMatrix<T> rigid_body_constraint_matrix(const Linkage& g, const JointGeometr
         ry[col] = ry[col] + from_int<T>(s) * u.y;
       }
     }
-    A.push_back(std::move(rx));
-    A.push_back(std::move(ry));
   }
   for (const LinkageJoint& j : g.joints()) {
     if (j.type != JointType::Prismatic) continue;
-    std::vector<T> row(N, from_int<T>(0));
+    const std::span<T> row = A.add_row(zero);
     if (const int c = g.unknown_of_link(j.links[1]); c >= 0) row[static_cast<size_t>(c)] = from_int<T>(1);
     if (const int c = g.unknown_of_link(j.links[0]); c >= 0) row[static_cast<size_t>(c)] = from_int<T>(-1);
-    A.push_back(std::move(row));
   }
   return A;
 }

@@ -102,7 +102,7 @@ struct SymbolicMotion {
   GiNaC::exmap solved_rates;
 };
 
-ex determinant(const std::vector<std::vector<ex>>& rows, size_t skip_row, size_t skip_col) {
+ex determinant(const DenseMatrix<ex>& rows, size_t skip_row, size_t skip_col) {
   const size_t n = rows.size() - (skip_row < rows.size() ? 1 : 0);
   GiNaC::matrix m(static_cast<unsigned>(n), static_cast<unsigned>(n));
   unsigned r = 0;

@@ -218,7 +218,7 @@ Rational compute_velocity_determinant(const MechanismScene& scene) {
     size_t p = c;
     while (p < n && cln::zerop(a[p][c])) ++p;
     if (p == n) return 0;
-    if (p != c) std::swap(a[p], a[c]), det = -det;
+    if (p != c) a.swap_rows(p, c), det = -det;
     det *= a[c][c];
     for (size_t r = c + 1; r < n; ++r) {
       if (cln::zerop(a[r][c])) continue;

@@ -20,7 +20,7 @@ namespace {
 
 /// Reference: dense Gauss-Jordan on [A | b] over the rationals, written out here.
 LinearSolution<Rational> dense_reference(DenseMatrix<Rational> A, std::vector<Rational> b) {
-  const size_t m = A.size(), n = m ? A[0].size() : 0;
+  const size_t m = A.size(), n = A.cols();
   LinearSolution<Rational> out;
   std::vector<size_t> pivots;
   size_t row = 0;
@@ -28,7 +28,7 @@ LinearSolution<Rational> dense_reference(DenseMatrix<Rational> A, std::vector<Ra
     size_t p = row;
     while (p < m && cln::zerop(A[p][col])) ++p;
     if (p == m) continue;
-    std::swap(A[p], A[row]);
+    A.swap_rows(p, row);
     std::swap(b[p], b[row]);
     for (size_t r = 0; r < m; ++r) {
       if (r == row || cln::zerop(A[r][col])) continue;
@@ -54,7 +54,7 @@ TEST(LinearSystem, ExactSparseRouteAgreesWithDenseEliminationOnRandomSystems) {
   std::uniform_int_distribution<int> coeff(-3, 3), size(1, 7), zero(0, 2);
   for (int trial = 0; trial < 300; ++trial) {
     const size_t m = static_cast<size_t>(size(rng)), n = static_cast<size_t>(size(rng));
-    DenseMatrix<Rational> A(m, std::vector<Rational>(n, 0));
+    DenseMatrix<Rational> A(m, n, Rational(0));
     std::vector<Rational> b(m, 0);
     for (size_t r = 0; r < m; ++r) {
       for (size_t c = 0; c < n; ++c)
@@ -82,7 +82,7 @@ TEST(LinearSystem, ExactSparseRouteAgreesWithDenseEliminationOnRandomSystems) {
 /// exact 0.
 LinearSolution<Tracked<double>> augmented_reference(DenseMatrix<Tracked<double>> A, std::vector<Tracked<double>> b) {
   using T = Tracked<double>;
-  const size_t m = A.size(), n = m ? A[0].size() : 0;
+  const size_t m = A.size(), n = A.cols();
   double amax = 0;
   for (const auto& row : A)
     for (const T& v : row) amax = std::max(amax, std::abs(v.v));
@@ -96,7 +96,7 @@ LinearSolution<Tracked<double>> augmented_reference(DenseMatrix<Tracked<double>>
     for (size_t r = row; r < m; ++r)
       if (std::abs(A[r][col].v) > threshold && std::abs(A[r][col].v) > best_mag) best = r, best_mag = std::abs(A[r][col].v);
     if (best == m) continue;
-    std::swap(A[row], A[best]);
+    A.swap_rows(row, best);
     std::swap(b[row], b[best]);
     const auto exact_zero = [](const T& v) { return v.v == 0 && v.e == 0; };
     for (size_t r = 0; r < m; ++r) {
@@ -129,9 +129,9 @@ Rational exact_of(double v) {
 
 DenseMatrix<Rational> exact_rows(const DenseMatrix<Tracked<double>>& A) {
   DenseMatrix<Rational> out;
-  for (const auto& row : A) {
+  for (size_t i = 0; i < A.size(); ++i) {
     std::vector<Rational> r;
-    for (const auto& v : row) r.push_back(exact_of(v.v));
+    for (const auto& v : A[i]) r.push_back(exact_of(v.v));
     out.push_back(r);
   }
   return out;
@@ -152,9 +152,9 @@ TEST(LinearSystem, OneFloatingEliminationReplayedOnTwoRightHandSidesIsBitForBitE
   for (int trial = 0; trial < 300; ++trial) {
     // Square systems mostly (solved ones), also one row more or fewer (inconsistent, underdetermined).
     const size_t n = static_cast<size_t>(size(rng)), m = trial % 4 == 1 ? n + 1 : trial % 4 == 2 && n > 1 ? n - 1 : n;
-    DenseMatrix<T> A(m, std::vector<T>(n, T(0)));
-    for (auto& row : A)
-      for (T& v : row)
+    DenseMatrix<T> A(m, n, T(0));
+    for (size_t r = 0; r < A.size(); ++r)
+      for (T& v : A[r])
         if (zero(rng) != 0) v = T(value(rng), zero(rng) == 0 ? 0.0 : radius(rng));
     if (m > 1 && trial % 3 == 0)  // a dependent row: the rank and the consistency test matter
       for (size_t c = 0; c < n; ++c) A[m - 1][c] = A[0][c] * T(2);
@@ -204,9 +204,9 @@ TEST(LinearSystem, EveryFloatingSolutionEnclosesTheExactSolutionOfItsMidpoints) 
     const size_t n = static_cast<size_t>(size(rng));
     const size_t inputs = static_cast<size_t>(std::uniform_int_distribution<int>(0, 2)(rng));
     const size_t constraints = n > inputs ? n - inputs + (trial % 5 == 0 ? 1 : 0) : 1;
-    DenseMatrix<T> A(constraints, std::vector<T>(n, T(0)));
-    for (auto& row : A)
-      for (T& v : row)
+    DenseMatrix<T> A(constraints, n, T(0));
+    for (size_t r = 0; r < A.size(); ++r)
+      for (T& v : A[r])
         if (zero(rng) != 0) v = T(std::ldexp(small(rng), std::uniform_int_distribution<int>(-8, 8)(rng)), 0.0);
     if (constraints > 1 && trial % 3 == 0)
       for (size_t c = 0; c < n; ++c) A[constraints - 1][c] = A[0][c] * T(3);
