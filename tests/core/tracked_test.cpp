@@ -5,8 +5,10 @@
 
 #include <cln/integer.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <random>
 
 #include "claims/polygon_context.h"
@@ -258,6 +260,18 @@ TYPED_TEST(TrackedTyped, AZeroOperandKeepsTheRadiusAnExactZero) {
     EXPECT_TRUE(r.e == Radius{});
   EXPECT_TRUE(ScalarTraits<T>::is_zero(zero * x));
   EXPECT_FALSE(ScalarTraits<T>::is_zero(x - x)) << "x has a radius: x - x is 0 within it, not known to be 0";
+}
+
+// A quotient of exact operands spreads no input error: its radius is its own rounding error
+// (the shortcut that skips the second division). A NaN radius is not "no error" and stays NaN.
+TEST(TrackedDivision, ExactOperandsGiveTheRoundingErrorAloneAndANaNRadiusIsKept) {
+  const Tracked<double> one(1), three(3);
+  const Tracked<double> q = one / three;
+  EXPECT_EQ(q.v, 1.0 / 3.0);
+  EXPECT_EQ(q.e, TrackedTraits<double>::rounding_error(q.v));
+  const Tracked<double> unknown(1.0, std::numeric_limits<double>::quiet_NaN());
+  EXPECT_FALSE(std::isfinite((unknown / three).e));
+  EXPECT_EQ((Tracked<double>(6) / three).e, TrackedTraits<double>::rounding_error(2.0)) << "6 / 3 = 2 in double";
 }
 
 TEST(TrackedFromInt, SmallIntegersAreExactWithZeroRadiusAsThroughARational) {
