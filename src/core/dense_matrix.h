@@ -55,8 +55,6 @@ class DenseMatrix {
   RowIterator<const DenseMatrix> end() const { return {this, rows_}; }
 
   void reserve(size_t rows) { entries_.reserve(rows * std::max<size_t>(cols_, 1)); }
-  /// Room for `rows` rows of `cols` entries: for a matrix built row by row whose width is known.
-  void reserve(size_t rows, size_t cols) { entries_.reserve(rows * cols); }
 
   /// Appends a row; the first row fixes the number of columns, every later one must match it.
   void push_back(std::span<const T> row) {

@@ -60,6 +60,9 @@ template <class T>
 void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inputs, DenseMatrix<T>& A,
                        std::vector<T>& b, bool second_order, const std::string& source,
                        const std::vector<InputValue<T>>* values = nullptr) {
+  // A matrix without rows yet (no constraints, or a scratch for the right-hand side) takes the
+  // width of the unknowns.
+  if (A.empty() && A.cols() == 0) A = DenseMatrix<T>::with_columns(static_cast<size_t>(g.unknown_count()));
   for (size_t k = 0; k < inputs.size(); ++k) {
     const MechanismInput& in = inputs[k];
     const int col = in.kind == MechanismInput::Kind::Link ? g.unknown_of_link(in.index) : g.unknown_of_joint(in.index);
@@ -67,7 +70,6 @@ void append_input_rows(const Linkage& g, const std::vector<MechanismInput>& inpu
       throw InputError(source, fmt::format("mechanism.inputs[{}]", k),
                        in.kind == MechanismInput::Kind::Link ? "an input on the ground link: its rates are 0 by definition"
                                                              : "a slider input on a revolute joint");
-    if (A.empty() && A.cols() == 0) A = DenseMatrix<T>::with_columns(static_cast<size_t>(g.unknown_count()));
     A.add_row(from_int<T>(0))[static_cast<size_t>(col)] = from_int<T>(1);
   }
   append_input_rates(inputs, b, second_order, values);
