@@ -1,13 +1,16 @@
 #include "proof/mechanism_proof.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <unordered_map>
 #include <functional>
+#include <map>
 #include <memory>
 #include <set>
+#include <unordered_map>
 
 #include "check/random_polygon.h"
 #include "core/symbolic_scalar.h"
@@ -17,6 +20,7 @@
 #include "mechanism/mechanism_vector_route.h"
 #include "proof/exceptional_set.h"
 #include "proof/rational_normal.h"
+#include "proof/symbolic_motion.h"
 #include "proof/topology_layout.h"
 
 namespace linkproof {
@@ -30,181 +34,21 @@ using proof_detail::RationalNormalizer;
 
 double since(ProofClock::time_point t) { return std::chrono::duration<double>(ProofClock::now() - t).count(); }
 
-// The free coordinates of the topology as GiNaC symbols (see the header comment).
-struct SymbolicConfiguration {
-  std::vector<std::string> names;
-  std::vector<Vec2<ex>> joint_at, point_at, axis;  // per joint, per point, per joint
-  std::vector<std::pair<ex, ex>> unit_axes;        // (c, s) with c^2 + s^2 = 1
-  std::vector<std::string> relations;
-  std::vector<InputValue<ex>> inputs;
-};
-
-class SymbolNames {
- public:
-  ex make(const std::string& prefix, const std::string& name) {
-    std::string base = prefix + "_";
-    for (char ch : name) base += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-    std::string unique = base;
-    for (int k = 2; !used_.insert(unique).second; ++k) unique = fmt::format("{}_{}", base, k);
-    names.push_back(unique);
-    return GiNaC::symbol(unique);
-  }
-  std::vector<std::string> names;
-
- private:
-  std::set<std::string> used_;
-};
-
-SymbolicConfiguration symbolic_configuration(const MechanismScene& s) {
-  const TopologyLayout layout = topology_layout(s);
-  const Linkage& g = s.linkage;
-  SymbolNames names;
-  SymbolicConfiguration c;
-  std::vector<Vec2<ex>> group;
-  for (const std::string& n : layout.group_name) {
-    const ex x = names.make("x", n), y = names.make("y", n);
-    group.push_back({x, y});
-  }
-  for (int j = 0; j < g.joint_count(); ++j) {
-    c.joint_at.push_back(group[static_cast<size_t>(layout.joint_group[static_cast<size_t>(j)])]);
-    if (g.joint(j).type != JointType::Prismatic) {
-      c.axis.push_back({0, 0});
-      continue;
-    }
-    const ex cj = names.make("c", g.joint(j).name), sj = names.make("s", g.joint(j).name);
-    c.axis.push_back({cj, sj});
-    c.unit_axes.emplace_back(cj, sj);
-    c.relations.push_back(fmt::format("{}^2 + {}^2 = 1", to_text(cj), to_text(sj)));
-  }
-  for (size_t p = 0; p < s.points.size(); ++p) c.point_at.push_back(group[static_cast<size_t>(layout.point_group[p])]);
-  for (const MechanismInput& in : s.inputs) {
-    const bool link = in.kind == MechanismInput::Kind::Link;
-    const std::string who = link ? g.link_names()[static_cast<size_t>(in.index)] : g.joint(in.index).name;
-    const ex rate = names.make(link ? "w" : "v", who), rate_dot = names.make(link ? "wd" : "vd", who);
-    c.inputs.push_back({rate, rate_dot});
-  }
-  c.names = names.names;
-  return c;
-}
-
-// The motion of every configuration at once (the header comment, step 1).
-struct SymbolicMotion {
-  std::string note;  // why there is none
-  bool singular_everywhere = false;
-  int unknowns = 0;
-  ex det;
-  GiNaC::symbol delta{"delta"};  // stands for 1 / det A (see clear_delta)
-  MechanismMotion<ex> motion;
-  // The same linkage with every rate a free symbol (omega_L, alpha_L, sd_J, sdd_J), and the map
-  // from those symbols to the solved rates: a claim that holds for every value of them needs
-  // no loop closure (a rigid-body identity).
-  MechanismMotion<ex> free_rates;
-  GiNaC::exmap solved_rates;
-};
-
-ex determinant(const DenseMatrix<ex>& rows, size_t skip_row, size_t skip_col) {
-  const size_t n = rows.size() - (skip_row < rows.size() ? 1 : 0);
-  GiNaC::matrix m(static_cast<unsigned>(n), static_cast<unsigned>(n));
-  unsigned r = 0;
-  for (size_t i = 0; i < rows.size(); ++i) {
-    if (i == skip_row) continue;
-    unsigned c = 0;
-    for (size_t k = 0; k < rows[i].size(); ++k) {
-      if (k == skip_col) continue;
-      m(r, c++) = rows[i][k];
-    }
-    ++r;
-  }
-  return n == 0 ? ex(1) : GiNaC::expand(m.determinant());
-}
-
-SymbolicMotion solve_symbolically(const MechanismScene& s, const SymbolicConfiguration& c) {
-  SymbolicMotion out;
-  const Linkage& g = s.linkage;
-  const JointGeometry<ex> geo{&c.joint_at, &c.axis};
-  const size_t N = static_cast<size_t>(g.unknown_count());
-  out.unknowns = static_cast<int>(N);
-  DenseMatrix<ex> A = rigid_body_constraint_matrix<ex>(g, geo);
-  std::vector<ex> b(A.size(), ex(0));
-  append_input_rows<ex>(g, s.inputs, A, b, false, s.source, &c.inputs);
-  if (A.size() != N) {
-    out.note = fmt::format("the velocity system has {} equations for {} unknowns (redundant constraints): the "
-                           "symbolic solution needs a square system", A.size(), N);
-    return out;
-  }
-  out.det = determinant(A, N, N);
-  if (out.det.is_zero()) {
-    out.singular_everywhere = true;
-    out.note = "the velocity system is singular on every configuration of the topology (det A = 0 identically)";
-    return out;
-  }
-  // adj(A)_{ik} = (-1)^{i+k} det(A without row k and column i).
-  std::vector<std::vector<ex>> adj(N, std::vector<ex>(N));
-  for (size_t k = 0; k < N; ++k)
-    for (size_t i = 0; i < N; ++i) adj[i][k] = ((i + k) % 2 ? -1 : 1) * determinant(A, k, i);
-  // 1/det A as a symbol: every rate is then a polynomial in the coordinates and delta, and the
-  // normal forms take no gcd with powers of det A (clear_delta puts it back).
-  const ex inverse_det = out.delta;
-  const auto solve = [&](const std::vector<ex>& rhs) {
-    std::vector<ex> x;
-    for (size_t i = 0; i < N; ++i) {
-      ex sum = 0;
-      for (size_t k = 0; k < N; ++k)
-        if (!adj[i][k].is_zero() && !rhs[k].is_zero()) sum += adj[i][k] * rhs[k];
-      x.push_back(sum * inverse_det);
-    }
-    return x;
-  };
-  const std::vector<ex> qdot = solve(b);
-  std::vector<ex> h = rigid_body_acceleration_rhs<ex>(g, qdot, true, geo);
-  DenseMatrix<ex> scratch;
-  append_input_rows<ex>(g, s.inputs, scratch, h, true, s.source, &c.inputs);
-  const std::vector<ex> qddot = solve(h);
-  MechanismMotion<ex>& m = out.motion;
-  for (int l = 0; l < g.link_count(); ++l) {
-    const int col = g.unknown_of_link(l);
-    m.omega.push_back(col < 0 ? ex(0) : qdot[static_cast<size_t>(col)]);
-    m.omega_dot.push_back(col < 0 ? ex(0) : qddot[static_cast<size_t>(col)]);
-  }
-  for (int j = 0; j < g.joint_count(); ++j) {
-    const int col = g.unknown_of_joint(j);
-    m.slide.push_back(col < 0 ? ex(0) : qdot[static_cast<size_t>(col)]);
-    m.slide_dot.push_back(col < 0 ? ex(0) : qddot[static_cast<size_t>(col)]);
-  }
-  complete_joint_motion(g, m, geo);
-  m.fields = link_fields_from_joints(g, m, geo);  // the form the proof's cancellations need (mechanism/poles.h)
-  MechanismMotion<ex>& f = out.free_rates;
-  const auto free_rate = [&](const std::string& name, int col, const std::vector<ex>& solved) {
-    if (col < 0) return ex(0);
-    const GiNaC::symbol r(name);
-    out.solved_rates[r] = solved[static_cast<size_t>(col)];
-    return ex(r);
-  };
-  for (int l = 0; l < g.link_count(); ++l) {
-    const std::string link = g.link_names()[static_cast<size_t>(l)];
-    f.omega.push_back(free_rate("omega_" + link, g.unknown_of_link(l), qdot));
-    f.omega_dot.push_back(free_rate("alpha_" + link, g.unknown_of_link(l), qddot));
-  }
-  for (int j = 0; j < g.joint_count(); ++j) {
-    f.slide.push_back(free_rate("sd_" + g.joint(j).name, g.unknown_of_joint(j), qdot));
-    f.slide_dot.push_back(free_rate("sdd_" + g.joint(j).name, g.unknown_of_joint(j), qddot));
-  }
-  complete_joint_motion(g, f, geo);
-  f.fields = link_fields_from_joints(g, f, geo);
-  return out;
-}
-
-// p(x, delta) with delta = 1/det as a polynomial in x alone: det^k p, k the degree in delta. For
-// det != 0 it vanishes exactly where p does, so p is zero on the configurations iff this is.
-// With c_i the coefficient of delta^i (i = l..k) it is sum c_i det^(k-i), by Horner's rule; the
-// expansions are the normalizer's (under its deadline; GiNaC's expand of such products is quadratic).
+// p(x, delta_1, ..) with delta_b = 1/det_b (symbolic_motion.h) as a polynomial in x alone:
+// det_b^k p for each b in turn, k the degree in delta_b. Where no det_b vanishes it vanishes
+// exactly where p does, so p is zero on the configurations iff this is. With c_i the coefficient
+// of delta^i (i = l..k) it is sum c_i det^(k-i), by Horner's rule; the expansions are the
+// normalizer's (under its deadline; GiNaC's expand of such products is quadratic).
 ex clear_delta(const ex& p, const SymbolicMotion& m, RationalNormalizer& normalizer) {
-  const ex e = GiNaC::expand(p);
-  if (!e.has(m.delta)) return e;
-  ex out = e.coeff(m.delta, e.ldegree(m.delta));
-  for (int i = e.ldegree(m.delta) + 1; i <= e.degree(m.delta); ++i)
-    out = normalizer.expanded_sum({{out, m.det}, {e.coeff(m.delta, i), 1}});
-  return out;
+  ex e = GiNaC::expand(p);
+  for (const InverseDeterminant& inv : m.inverses) {
+    if (!e.has(inv.delta)) continue;
+    ex out = e.coeff(inv.delta, e.ldegree(inv.delta));
+    for (int i = e.ldegree(inv.delta) + 1; i <= e.degree(inv.delta); ++i)
+      out = normalizer.expanded_sum({{out, inv.det}, {e.coeff(inv.delta, i), 1}});
+    e = GiNaC::expand(out);
+  }
+  return e;
 }
 
 // p reduced by s^2 = 1 - c^2 for every unit axis (c, s): zero iff p vanishes on the circles.
@@ -314,13 +158,15 @@ void take_samples(TopologyProof& p, SampleResult r, const TopologySampling& o, c
 }
 
 // Degree bounds of an expression DAG as a rational function of the symbols, num / den, with
-// delta read as 1 / det (the header comment). Memoised: the DAG's shared nodes are visited once.
+// each delta_b read as 1 / det_b (the header comment). Memoised: the DAG's shared nodes are visited once.
 class DegreeBounds {
  public:
   struct Bound {
     long num = 0, den = 0;
   };
-  explicit DegreeBounds(const SymbolicMotion& m) : delta_(m.delta), det_degree_(total_degree(m.det)) {}
+  explicit DegreeBounds(const SymbolicMotion& m) {
+    for (const InverseDeterminant& inv : m.inverses) det_degree_[inv.delta] = total_degree(inv.det);
+  }
 
   Bound of(const ex& e) {
     if (const auto it = memo_.find(e); it != memo_.end()) return it->second;
@@ -354,7 +200,10 @@ class DegreeBounds {
  private:
   Bound compute(const ex& e) {
     if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) return {0, 0};
-    if (GiNaC::is_a<GiNaC::symbol>(e)) return e.is_equal(delta_) ? Bound{0, det_degree_} : Bound{1, 0};
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      const auto inverse = det_degree_.find(e);
+      return inverse != det_degree_.end() ? Bound{0, inverse->second} : Bound{1, 0};
+    }
     if (GiNaC::is_exactly_a<GiNaC::add>(e)) {  // over the product of the denominators
       std::vector<Bound> parts;
       long den = 0;
@@ -384,8 +233,7 @@ class DegreeBounds {
   struct NoDegreeBound {};
 
  private:
-  GiNaC::symbol delta_;
-  long det_degree_;
+  std::map<ex, long, GiNaC::ex_is_less> det_degree_;  // per delta_b: deg det_b
   std::unordered_map<ex, Bound, std::hash<ex>, GiNaC::ex_is_equal> memo_;
 };
 
@@ -424,15 +272,82 @@ class TopologyProver {
     if (motion_) {
       r.system_note = motion_->note;
       if (motion_->note.empty()) r.det_terms = static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(motion_->det) ? motion_->det.nops() : 1);
+      r.groups = motion_->block_sizes;
+    }
+    if (route_) {
+      r.proof_driver = scene_.linkage.link_names()[static_cast<size_t>(route_->inputs.front().index)];
+      r.proof_driver_groups = route_->block_sizes;
     }
     r.seconds = since(start);
     return r;
   }
 
  private:
+  // The motion driven by the scene's inputs: what the claims are about.
   const SymbolicMotion& motion() {
-    if (!motion_) motion_ = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_));
+    if (!motion_) motion_ = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_, scene_.inputs, config_.inputs));
     return *motion_;
+  }
+
+  // The motion the residuals are normalized in: driven by the link whose groups are smallest
+  // when that is not the scene's driver (symbolic_motion.h says why a proof there is a proof).
+  const SymbolicMotion& route() {
+    if (!route_chosen_) {
+      route_chosen_ = true;
+      for (const MechanismInput& in : better_proof_drivers(scene_)) {
+        const std::string& link = scene_.linkage.link_names()[static_cast<size_t>(in.index)];
+        const std::vector<InputValue<ex>> rates{{GiNaC::symbol("w_" + link + "_driver"), GiNaC::symbol("wd_" + link + "_driver")}};
+        auto m = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_, {in}, rates));
+        if (m->singular_everywhere || !m->note.empty() || vanishes_on_circles(m->det)) continue;
+        route_ = std::move(m);
+        break;
+      }
+    }
+    return route_ ? *route_ : motion();
+  }
+
+  static bool has_input_rate(const SymbolicMotion& m, const ex& e) {
+    for (const InputValue<ex>& v : m.input_values)
+      if (e.has(v.rate) || e.has(v.rate_dot)) return true;
+    return false;
+  }
+
+  std::string driver_argument(const SymbolicMotion& r) const {
+    const auto groups = [](const std::vector<int>& sizes) {
+      std::vector<int> sorted = sizes;
+      std::sort(sorted.rbegin(), sorted.rend());
+      return fmt::format("{}", fmt::join(sorted, ", "));
+    };
+    const SymbolicMotion& own = *motion_;
+    return fmt::format(
+        "solved with link {} as the driver (groups of {} unknowns, against {} with the scene's input): wherever both "
+        "drivers determine the motion it is the same motion, so lhs - rhs, a rational function of the coordinates and "
+        "the scene's input rates, vanishes on a dense set and is the zero function",
+        scene_.linkage.link_names()[static_cast<size_t>(r.inputs.front().index)], groups(r.block_sizes),
+        groups(own.block_sizes));
+  }
+
+  // The claim's divisors in motion m, as polynomials (deltas cleared): the words' degeneracies,
+  // named, and the divisions left in the evaluated sides.
+  struct ClaimDivisors {
+    NamedDegeneracies named;
+    std::vector<ex> left;
+    bool depend_on(const SymbolicMotion& m) const {
+      for (const auto& [poly, meaning] : named)
+        if (has_input_rate(m, poly)) return true;
+      for (const ex& d : left)
+        if (has_input_rate(m, d)) return true;
+      return false;
+    }
+  };
+  ClaimDivisors divisors_of(const MechanismDataClaim& claim, const SymbolicMotion& m, const MechanismFrameOf<ex>& frame,
+                            const ClaimValues& values, RationalNormalizer& normalizer) {
+    ClaimDivisors d;
+    claim_degeneracies(claim.lhs.root(), frame, d.named);
+    claim_degeneracies(claim.rhs.root(), frame, d.named);
+    for (auto& [poly, meaning] : d.named) poly = clear_delta(normalizer.numerator(poly), m, normalizer);
+    for (const ex& x : proof_detail::divisors_in(values.sides)) d.left.push_back(clear_delta(normalizer.numerator(x), m, normalizer));
+    return d;
   }
 
   void prove_symbolically(const MechanismDataClaim& claim, TopologyProof& p, ProofClock::time_point start) {
@@ -458,39 +373,48 @@ class TopologyProver {
     } catch (const GiNaC::pole_error&) {
     }
     try {
-      const MechanismFrameOf<ex> frame(scene_, m.motion, config_.joint_at, config_.point_at, config_.axis, true);
+      // The residual in the motion of the driver with the smallest groups (symbolic_motion.h):
+      // the scene's own unless another link splits the system further.
+      const SymbolicMotion& r = route();
+      const bool driven_otherwise = &r != &m;
+      const MechanismFrameOf<ex> frame(scene_, r.motion, config_.joint_at, config_.point_at, config_.axis, true);
       const ClaimValues values = claim_values(claim, frame);
       RationalNormalizer normalizer(false);  // the denominators are known: no gcds (rational_normal.h)
       normalizer.set_term_limit(kTermLimit);
       normalizer.set_deadline(deadline);
       bool uses_motion = false;
       for (const auto& [component, residual] : values.residuals) {
-        uses_motion = uses_motion || residual.has(m.delta);
-        const ex numerator = clear_delta(normalizer.numerator(residual), m, normalizer);
+        uses_motion = uses_motion || r.has_inverse(residual) || (driven_otherwise && has_input_rate(r, residual));
+        const ex numerator = clear_delta(normalizer.numerator(residual), r, normalizer);
         p.numerator_terms += static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(numerator) ? numerator.nops() : !numerator.is_zero());
         const ex reduced = reduce_on_circles(numerator, config_.unit_axes, normalizer);
         if (!reduced.is_zero()) return disprove(claim, p, component, reduced);
       }
+      if (driven_otherwise) p.argument.push_back(driver_argument(r));
       p.argument.push_back(fmt::format(
           "lhs - rhs is identically zero as a rational function of the {} coordinates{}{}", config_.names.size(),
           config_.relations.empty() ? "" : " on the unit circles of the axes",
           p.numerator_terms == 0 ? "" : fmt::format(" (its numerator, {} terms, vanishes there)", p.numerator_terms)));
       NamedDegeneracies motion_named{{m.det, "dead centre or change point: det A = 0, the loop closures and the inputs do "
                                             "not determine the velocities"}};
-      NamedDegeneracies claim_named;
-      claim_degeneracies(claim.lhs.root(), frame, claim_named);
-      claim_degeneracies(claim.rhs.root(), frame, claim_named);
       // What was divided by, as polynomials in the coordinates: det A where the rates enter, the
       // claim's own divisors as written (GiNaC simplifies x/x to 1 when it builds an expression:
-      // the words' degeneracies keep them), and the divisors left in the expressions.
+      // the words' degeneracies keep them), and the divisors left in the expressions. With
+      // another driver they are the scene's only if they contain no rate; else they are taken
+      // again in the scene's own motion.
+      ClaimDivisors claim_divisors = divisors_of(claim, r, frame, values, normalizer);
+      if (driven_otherwise && claim_divisors.depend_on(r)) {
+        const MechanismFrameOf<ex> own(scene_, m.motion, config_.joint_at, config_.point_at, config_.axis, true);
+        claim_divisors = divisors_of(claim, m, own, claim_values(claim, own), normalizer);
+      }
+      const NamedDegeneracies& claim_named = claim_divisors.named;
       std::vector<ex> divisors;
       if (uses_motion) divisors.push_back(m.det);
-      for (auto& [poly, meaning] : claim_named) {
-        poly = clear_delta(normalizer.numerator(poly), m, normalizer);
+      for (const auto& [poly, meaning] : claim_named) {
         if (vanishes_on_circles(poly)) return undefined_everywhere(p, meaning);
         divisors.push_back(poly);
       }
-      for (const ex& d : proof_detail::divisors_in(values.sides)) divisors.push_back(clear_delta(normalizer.numerator(d), m, normalizer));
+      divisors.insert(divisors.end(), claim_divisors.left.begin(), claim_divisors.left.end());
       const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
           divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
       if (!take_exceptions(p, factors, [&](const ex& f) { return vanishes_on_circles(f); })) return;
@@ -686,6 +610,8 @@ class TopologyProver {
   TopologyProofOptions options_;
   SymbolicConfiguration config_ = symbolic_configuration(scene_);
   std::unique_ptr<SymbolicMotion> motion_;
+  std::unique_ptr<SymbolicMotion> route_;  // set when another driver is used
+  bool route_chosen_ = false;
 };
 
 }  // namespace

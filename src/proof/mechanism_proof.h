@@ -8,10 +8,13 @@
 // (w_L, wd_L for a link; v_J, vd_J for a slider). The link lengths follow from the positions, so
 // *every* value of these symbols is a configuration: a rational function of them that is
 // identically zero is zero on all of them. The proof:
-//   1. the velocity system (loop closures and input rows, square: unknowns = rows) is solved by
-//      Cramer's rule, q-dot = adj(A) b / det A, and the acceleration system likewise with the
-//      same A; det A = 0 is where the inputs do not determine the motion (a dead centre or a
-//      change point), and only there;
+//   1. the velocity system (loop closures and input rows, square: unknowns = rows) is solved
+//      group by group in its block triangular form, by Cramer's rule within each group
+//      (proof/symbolic_motion.h), and the acceleration system likewise with the same A; det A = 0
+//      is where the inputs do not determine the motion (a dead centre or a change point), and
+//      only there. With one input, the motion may be solved with another link as the driver
+//      when that splits the system into smaller groups (symbolic_motion.h says why a proof
+//      there is a proof of the claim as stated);
 //   2. both sides of the claim are evaluated on these symbolic rates and positions, by the same
 //      code as on a scene (mechanism/mechanism_data_claim.h);
 //   3. lhs - rhs (each component) is brought to a numerator / denominator of expanded
@@ -78,6 +81,9 @@ struct TopologyProofRun {
   std::vector<std::string> relations; ///< "c_D^2 + s_D^2 = 1", one per prismatic axis
   int unknowns = 0;                   ///< of the velocity system (its size)
   int det_terms = 0;                  ///< terms of det A expanded (0 if the system was not built)
+  std::vector<int> groups;            ///< unknowns of each group of the system, in the order solved
+  std::string proof_driver;           ///< the link that drove the proofs' motion if not the scene's input
+  std::vector<int> proof_driver_groups;  ///< ... and its groups
   std::string system_note;            ///< why the system could not be solved symbolically, if so
   double seconds = 0;
   std::vector<TopologyProof> claims;

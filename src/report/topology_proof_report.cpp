@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include "report/json_report.h"
 #include "report/mechanism_claim_report.h"
@@ -51,7 +52,11 @@ nlohmann::json to_json(const TopologyProofRun& run, const ClaimsStatus& status) 
           {"topology", run.topology},
           {"coordinates", run.symbols},
           {"relations", run.relations},
-          {"velocity_system", {{"unknowns", run.unknowns}, {"det_terms", run.det_terms}, {"note", run.system_note}}},
+          {"velocity_system", {{"unknowns", run.unknowns}, {"det_terms", run.det_terms}, {"note", run.system_note},
+                               {"groups", run.groups},
+                               {"proof_driver", run.proof_driver.empty() ? json(nullptr)
+                                                                         : json{{"link", run.proof_driver},
+                                                                                {"groups", run.proof_driver_groups}}}}},
           {"claims", claims},
           {"summary", {{"claims", run.claims.size()}, {"as_expected", ok},
                        {"not_as_expected", static_cast<int>(run.claims.size()) - ok}}},
@@ -67,7 +72,10 @@ void write_text(std::ostream& out, const TopologyProofRun& run, const ClaimsStat
   fmt::print(out, "coordinates (every value is a configuration): {}\n", joined(run.symbols));
   if (!run.relations.empty()) fmt::print(out, "relations: {}\n", joined(run.relations));
   if (run.det_terms > 0)
-    fmt::print(out, "velocity system: {} unknowns, solved by Cramer's rule; det A has {} terms\n", run.unknowns, run.det_terms);
+    fmt::print(out, "velocity system: {} unknowns in groups of {} (in the order solved, Cramer's rule in each); det A has {} "
+               "terms\n", run.unknowns, fmt::join(run.groups, ", "), run.det_terms);
+  if (!run.proof_driver.empty())
+    fmt::print(out, "proofs with link {} as the driver: groups of {}\n", run.proof_driver, fmt::join(run.proof_driver_groups, ", "));
   if (!run.system_note.empty()) fmt::print(out, "velocity system: {}\n", run.system_note);
   fmt::print(out, "\n");
   for (size_t k = 0; k < run.claims.size(); ++k) {

@@ -3,7 +3,8 @@
 // `linkproof check-claim CLAIMS --topology SCENE` without --count).
 //
 // JSON: {"mode": "topology_proof", "topology", "coordinates": [symbol, ...], "relations":
-// ["c_D^2 + s_D^2 = 1", ...], "velocity_system": {"unknowns", "det_terms", "note"}, "claims":
+// ["c_D^2 + s_D^2 = 1", ...], "velocity_system": {"unknowns", "det_terms", "note", "groups": [size,
+// ...], "proof_driver": {"link", "groups"} | null}, "claims":
 // [{"id", "source", "statement", "expected", "verdict" (proved | proved_generically | disproved |
 // holds_with_probability | holds_on_samples | error), "as_expected", "except": [{"polynomial",
 // "meaning"}], "argument": [step, ...], "samples_compared", "identity_test": {"trials",
