@@ -9,7 +9,6 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <set>
 #include <unordered_map>
 
 #include "check/random_polygon.h"
@@ -313,14 +312,11 @@ class TopologyProver {
   }
 
   std::string driver_argument(const SymbolicMotion& r) const {
-    const auto groups = [](const std::vector<int>& sizes) {
-      std::vector<int> sorted = sizes;
-      std::sort(sorted.rbegin(), sorted.rend());
-      return fmt::format("{}", fmt::join(sorted, ", "));
-    };
+    const auto groups = [](const std::vector<int>& sizes) { return fmt::format("{}", fmt::join(sizes, ", ")); };
     const SymbolicMotion& own = *motion_;
     return fmt::format(
-        "solved with link {} as the driver (groups of {} unknowns, against {} with the scene's input): wherever both "
+        "solved with link {} as the driver (groups of {} unknowns in the order solved, against {} with the scene's "
+        "input): wherever both "
         "drivers determine the motion it is the same motion, so lhs - rhs, a rational function of the coordinates and "
         "the scene's input rates, vanishes on a dense set and is the zero function",
         scene_.linkage.link_names()[static_cast<size_t>(r.inputs.front().index)], groups(r.block_sizes),
