@@ -18,6 +18,7 @@
 #include "mechanism/mechanism_solve.h"
 #include "mechanism/mechanism_vector_route.h"
 #include "proof/exceptional_set.h"
+#include "proof/packed_normalizer.h"
 #include "proof/rational_normal.h"
 #include "proof/symbolic_motion.h"
 #include "proof/topology_layout.h"
@@ -379,12 +380,13 @@ class TopologyProver {
       normalizer.set_term_limit(kTermLimit);
       normalizer.set_deadline(deadline);
       bool uses_motion = false;
+      proof_detail::PackedNormalizer packed;
+      packed.set_deadline(deadline);
       for (const auto& [component, residual] : values.residuals) {
         uses_motion = uses_motion || r.has_inverse(residual) || (driven_otherwise && has_input_rate(r, residual));
-        const ex numerator = clear_delta(normalizer.numerator(residual), r, normalizer);
-        p.numerator_terms += static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(numerator) ? numerator.nops() : !numerator.is_zero());
-        const ex reduced = reduce_on_circles(numerator, config_.unit_axes, normalizer);
-        if (!reduced.is_zero()) return disprove(claim, p, component, reduced);
+        const ResidualNumerator n = residual_numerator(residual, r, normalizer, packed);
+        p.numerator_terms += static_cast<int>(n.terms);
+        if (n.reduced_terms != 0) return disprove(claim, p, component, n.reduced_terms);
       }
       if (driven_otherwise) p.argument.push_back(driver_argument(r));
       p.argument.push_back(fmt::format(
@@ -473,6 +475,28 @@ class TopologyProver {
                                           : fmt::format("it holds wherever none of the {} factor(s) listed vanishes",
                                                         p.except.size()));
     return true;
+  }
+
+  // A residual's numerator with the deltas cleared (`terms`), and the terms left of it once
+  // reduced on the circles (0: it vanishes on every configuration). In packed polynomials
+  // (packed_normalizer.h) when they can hold it; in GiNaC's otherwise. Both compute the same
+  // polynomials (tests/proof/packed_normalizer_test.cpp).
+  struct ResidualNumerator {
+    size_t terms = 0, reduced_terms = 0;
+  };
+  ResidualNumerator residual_numerator(const ex& residual, const SymbolicMotion& r, RationalNormalizer& normalizer,
+                                       proof_detail::PackedNormalizer& packed) const {
+    std::vector<std::pair<ex, ex>> inverses;
+    for (const InverseDeterminant& inv : r.inverses) inverses.emplace_back(inv.delta, inv.det);
+    try {
+      const proof_detail::PackedPolynomial n = proof_detail::clear_inverses(packed.numerator(residual), inverses, packed);
+      return {n.terms(), proof_detail::reduce_on_circles(n, config_.unit_axes, packed).terms()};
+    } catch (const proof_detail::PackedUnsupported&) {
+    } catch (const proof_detail::PackedOverflow&) {
+    }
+    const auto terms = [](const ex& e) -> size_t { return GiNaC::is_exactly_a<GiNaC::add>(e) ? e.nops() : !e.is_zero(); };
+    const ex numerator = clear_delta(normalizer.numerator(residual), r, normalizer);
+    return {terms(numerator), terms(reduce_on_circles(numerator, config_.unit_axes, normalizer))};
   }
 
   bool vanishes_on_circles(const ex& polynomial) const {
@@ -590,8 +614,7 @@ class TopologyProver {
         num, passed, config_.unit_axes.empty() ? "" : " and axis parameter", num, den, passed, p.failure_bound));
   }
 
-  void disprove(const MechanismDataClaim& claim, TopologyProof& p, const std::string& component, const ex& numerator) {
-    const int terms = static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(numerator) ? numerator.nops() : 1);
+  void disprove(const MechanismDataClaim& claim, TopologyProof& p, const std::string& component, size_t terms) {
     const std::string why = fmt::format("lhs - rhs{} is not identically zero: its numerator is a non-zero polynomial of {} "
                                         "terms", component == "total" ? "" : " (" + component + ")", terms);
     p.argument.push_back(why);
