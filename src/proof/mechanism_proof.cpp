@@ -239,7 +239,9 @@ class DegreeBounds {
 
 constexpr double kIdentityTestRange = 1099511627776.0;  // 2^40: each coordinate, rate and t
 constexpr int kIdentityTestTrials = 3;
-// Expansions beyond this many terms go to the identity test: one would take minutes.
+// On GiNaC's route (the rigid-body test, the divisors, and residuals the packed polynomials
+// cannot hold), expansions beyond this many terms go to the identity test: one would take
+// minutes. The packed route has its own limits (PackedLimits).
 constexpr double kTermLimit = 5e5;
 
 class TopologyProver {
