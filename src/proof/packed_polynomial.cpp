@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <numeric>
 #include <utility>
 
 namespace linkproof::proof_detail {
@@ -320,7 +319,7 @@ PackedPolynomial multiply(const PackedPolynomial& a, const PackedPolynomial& b, 
   for (size_t i = 0; i < outer_runs.size(); ++i)
     for (size_t j = 0; j < inner_runs.size(); ++j)
       pairs.push_back({outer_runs[i].high + inner_runs[j].high, static_cast<uint32_t>(i), static_cast<uint32_t>(j)});
-  std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.high < y.high; });
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& first, const Pair& second) { return first.high < second.high; });
   TermTable table(std::min(outer.terms() * inner.terms(), size_t{1} << 16));
   std::vector<PackedKey> keys;
   std::vector<cln::cl_RA> coefficients;

@@ -17,7 +17,7 @@ namespace {
 
 using GiNaC::ex;
 
-std::vector<GiNaC::symbol> symbols(int count) {
+std::vector<GiNaC::symbol> packed_symbols(int count) {
   std::vector<GiNaC::symbol> s;
   for (int i = 0; i < count; ++i) s.emplace_back("x" + std::to_string(i));
   return s;
@@ -26,7 +26,7 @@ std::vector<GiNaC::symbol> symbols(int count) {
 bool same_polynomial(const ex& a, const ex& b) { return GiNaC::expand(a - b).is_zero(); }
 
 TEST(PackedPolynomial, ASquareOfASumExpandsAsGiNaCExpandsIt) {
-  const std::vector<GiNaC::symbol> x = symbols(3);
+  const std::vector<GiNaC::symbol> x = packed_symbols(3);
   PackedNormalizer n;
   const ex e = GiNaC::pow(x[0] + 2 * x[1] - GiNaC::numeric(3, 7) * x[2] + 5, 4);
   EXPECT_TRUE(same_polynomial(n.to_ex(n.numerator(e)), GiNaC::expand(e)));
@@ -35,7 +35,7 @@ TEST(PackedPolynomial, ASquareOfASumExpandsAsGiNaCExpandsIt) {
 
 TEST(PackedPolynomial, WideningTheFieldsKeepsTheTermsSortedAndEqual) {
   PackedNormalizer n;
-  const std::vector<GiNaC::symbol> x = symbols(4);
+  const std::vector<GiNaC::symbol> x = packed_symbols(4);
   // x0 of degree 1 and x3 of degree 40: adding them repacks x0's field wider.
   const PackedPolynomial a = n.numerator(x[0] * x[1] + x[2] + 1);
   const PackedPolynomial b = n.numerator(GiNaC::pow(x[3], 40) + GiNaC::pow(x[0], 9));
@@ -49,7 +49,7 @@ TEST(PackedPolynomial, WideningTheFieldsKeepsTheTermsSortedAndEqual) {
 TEST(PackedPolynomial, AProductSplitIntoOutputBucketsEqualsGiNaCsExpansion) {
   // 462 x 463 terms: more partial products than a single hash table takes, so the product is
   // accumulated bucket by bucket (packed_polynomial.cpp); GiNaC expands the power directly.
-  const std::vector<GiNaC::symbol> x = symbols(6);
+  const std::vector<GiNaC::symbol> x = packed_symbols(6);
   const ex sum = x[0] + 2 * x[1] - GiNaC::numeric(3, 2) * x[2] + x[3] - 5 * x[4] + x[5];
   PackedNormalizer n;
   const PackedPolynomial sixth = n.numerator(GiNaC::expand(GiNaC::pow(sum, 6)));
@@ -64,7 +64,7 @@ TEST(PackedPolynomial, AProductSplitIntoOutputBucketsEqualsGiNaCsExpansion) {
 
 TEST(PackedPolynomial, CoefficientsInAVariableRebuildThePolynomial) {
   PackedNormalizer n;
-  const std::vector<GiNaC::symbol> x = symbols(3);
+  const std::vector<GiNaC::symbol> x = packed_symbols(3);
   const ex e = GiNaC::expand(GiNaC::pow(x[0] + x[1] * x[2] - 2, 3) * (x[1] - x[2]));
   const std::vector<PackedPolynomial> c = n.numerator(e).coefficients_in(n.variable(x[1]));
   ASSERT_EQ(c.size(), 5u);  // degree 4 in x1
@@ -98,7 +98,7 @@ ex random_expression(const std::vector<GiNaC::symbol>& x, std::mt19937& g, int n
 }
 
 TEST(PackedNormalizer, GivesRationalNormalizersNumeratorAndDenominatorTermForTerm) {
-  const std::vector<GiNaC::symbol> x = symbols(4);
+  const std::vector<GiNaC::symbol> x = packed_symbols(4);
   const unsigned seed = 20261128;
   std::mt19937 g(seed);
   int compared = 0;
@@ -124,7 +124,7 @@ TEST(PackedNormalizer, GivesRationalNormalizersNumeratorAndDenominatorTermForTer
 }
 
 TEST(PackedNormalizer, AnIdentityHasTheZeroNumerator) {
-  const std::vector<GiNaC::symbol> x = symbols(3);
+  const std::vector<GiNaC::symbol> x = packed_symbols(3);
   PackedNormalizer n;
   const ex a = x[0] / (x[1] - x[2]), b = x[2] / (x[1] + x[0]);
   // (a + b)^2 - a^2 - 2 a b - b^2 = 0 as a rational function, not as a written expression.
@@ -133,7 +133,7 @@ TEST(PackedNormalizer, AnIdentityHasTheZeroNumerator) {
 }
 
 TEST(PackedNormalizer, RefusesWhatItCannotHold) {
-  const std::vector<GiNaC::symbol> x = symbols(40);
+  const std::vector<GiNaC::symbol> x = packed_symbols(40);
   PackedNormalizer n;
   EXPECT_THROW(n.normal(GiNaC::abs(x[0]) + x[1]), PackedUnsupported);
   EXPECT_THROW(n.normal(GiNaC::sqrt(GiNaC::ex(2)) * x[1]), PackedUnsupported);
@@ -145,7 +145,7 @@ TEST(PackedNormalizer, RefusesWhatItCannotHold) {
 }
 
 TEST(PackedNormalizer, StopsAtItsDeadlineAndItsTermLimit) {
-  const std::vector<GiNaC::symbol> x = symbols(8);
+  const std::vector<GiNaC::symbol> x = packed_symbols(8);
   ex sum = 0;
   for (const GiNaC::symbol& s : x) sum += s;
   {
@@ -173,7 +173,7 @@ TEST(PackedNormalizer, StopsAtItsDeadlineAndItsTermLimit) {
 }
 
 TEST(PackedNormalizer, ClearingAnInverseMultipliesByTheDeterminantsPower) {
-  const std::vector<GiNaC::symbol> x = symbols(3);
+  const std::vector<GiNaC::symbol> x = packed_symbols(3);
   const GiNaC::symbol delta("delta");
   PackedNormalizer n;
   const ex det = x[0] * x[1] - x[2];
