@@ -39,7 +39,7 @@ PackedPolynomial PackedNormalizer::multiply(const PackedPolynomial& a, const Pac
   } catch (const PackedTooLarge& t) {
     throw out_of_limits(t);
   } catch (const PackedOverflow&) {
-    throw PackedUnsupported{"exponents that need more than 128 bits"};
+    throw PackedUnsupported{"exponents that need more than 127 bits"};
   }
 }
 
@@ -58,7 +58,7 @@ PackedNormalizer::Fraction PackedNormalizer::sum(const Fraction& a, const Fracti
     if (a.den == b.den) return {a.num + b.num, a.den};
     return {multiply(a.num, b.den) + multiply(b.num, a.den), multiply(a.den, b.den)};
   } catch (const PackedOverflow&) {
-    throw PackedUnsupported{"exponents that need more than 128 bits"};
+    throw PackedUnsupported{"exponents that need more than 127 bits"};
   }
 }
 

@@ -34,12 +34,11 @@ constexpr int kMaxPackedVariables = 64;
 
 /// The exponents of a polynomial do not fit in 127 bits (or it has too many variables).
 struct PackedOverflow {};
-/// What a product may cost: the terms it may hold (memory), and the partial products of one
-/// hashed product (time: each is a hash-table update, and a product of n x m terms that gives
-/// few of them still costs n m).
+/// What one product may cost: the terms it may hold (memory), and its partial products (time:
+/// n x m for factors of n and m terms, however few terms they leave).
 struct PackedLimits {
   size_t terms = 16'000'000;  // about 0.8 GB at the peak of a product
-  size_t products = 50'000'000;  // about 5 s
+  size_t products = 50'000'000;  // seconds
 };
 /// A product was about to pass a limit: the terms it held, or the partial products it needs.
 struct PackedTooLarge {
@@ -71,8 +70,6 @@ class PackedPolynomial {
 
   bool is_zero() const { return keys_.empty(); }
   size_t terms() const { return keys_.size(); }
-  /// A constant (or zero) polynomial: its value.
-  bool is_constant() const { return keys_.empty() || (keys_.size() == 1 && keys_[0] == 0); }
   const PackedLayout& layout() const { return layout_; }
   const std::vector<PackedKey>& keys() const { return keys_; }
   const std::vector<cln::cl_RA>& coefficients() const { return coefficients_; }
@@ -80,7 +77,8 @@ class PackedPolynomial {
   uint32_t degree(int v) const;
   bool operator==(const PackedPolynomial& o) const;
 
-  /// The same polynomial with fields for (at least) these bounds; sorted order is kept.
+  /// The same polynomial in the layout `to`, whose fields are nowhere narrower than this one's;
+  /// sorted order is kept.
   PackedPolynomial repacked(const PackedLayout& to) const;
 
   /// The polynomials c_k with this = sum_k c_k v^k (c_k free of v), k = 0 .. degree(v).
