@@ -384,9 +384,11 @@ class TopologyProver {
       bool uses_motion = false;
       proof_detail::PackedNormalizer packed;
       packed.set_deadline(deadline);
+      std::vector<std::pair<ex, ex>> inverses;  // (delta_b, det_b)
+      for (const InverseDeterminant& inv : r.inverses) inverses.emplace_back(inv.delta, inv.det);
       for (const auto& [component, residual] : values.residuals) {
         uses_motion = uses_motion || r.has_inverse(residual) || (driven_otherwise && has_input_rate(r, residual));
-        const ResidualNumerator n = residual_numerator(residual, r, normalizer, packed);
+        const ResidualNumerator n = residual_numerator(residual, r, inverses, normalizer, packed);
         p.numerator_terms += static_cast<int>(n.terms);
         if (n.reduced_terms != 0) return disprove(claim, p, component, n.reduced_terms);
       }
@@ -479,17 +481,16 @@ class TopologyProver {
     return true;
   }
 
-  // A residual's numerator with the deltas cleared (`terms`), and the terms left of it once
-  // reduced on the circles (0: it vanishes on every configuration). In packed polynomials
-  // (packed_normalizer.h) when they can hold it; in GiNaC's otherwise. Both compute the same
-  // polynomials (tests/proof/packed_normalizer_test.cpp).
+  // A residual's numerator with r's deltas (`inverses`, as (delta_b, det_b)) cleared (`terms`),
+  // and the terms left of it once reduced on the circles (0: it vanishes on every
+  // configuration). In packed polynomials (packed_normalizer.h) when they can hold it; in
+  // GiNaC's otherwise. Both compute the same polynomials (tests/proof/packed_normalizer_test.cpp).
   struct ResidualNumerator {
     size_t terms = 0, reduced_terms = 0;
   };
-  ResidualNumerator residual_numerator(const ex& residual, const SymbolicMotion& r, RationalNormalizer& normalizer,
+  ResidualNumerator residual_numerator(const ex& residual, const SymbolicMotion& r,
+                                       const std::vector<std::pair<ex, ex>>& inverses, RationalNormalizer& normalizer,
                                        proof_detail::PackedNormalizer& packed) const {
-    std::vector<std::pair<ex, ex>> inverses;
-    for (const InverseDeterminant& inv : r.inverses) inverses.emplace_back(inv.delta, inv.det);
     try {
       const proof_detail::PackedPolynomial n = proof_detail::clear_inverses(packed.numerator(residual), inverses, packed);
       return {n.terms(), proof_detail::reduce_on_circles(n, config_.unit_axes, packed).terms()};

@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "io/claim_file.h"
 #include "linkproof/io/mechanism_scene.h"
-#include "mechanism/mechanism_data_claim.h"
 #include "proof/mechanism_proof.h"
+#include "support/topology_claims.h"
 
 namespace linkproof {
 namespace {
@@ -19,24 +18,18 @@ std::string class3_source(const std::string& rel) { return std::string(LINKPROOF
 
 TEST(ClassThreeTopologyProof, TheNestedDyadPlansForEpsilonOneAndTwoAreProvedWithTheCranksDeadCentresAsExceptions) {
   const MechanismScene scene = load_mechanism_scene(class3_source("verify/scenes/mechanisms/seed003_class3.yaml"));
-  MechanismClaimFile file = load_mechanism_claim_file(class3_source("verify/claims/mechanisms/koshel_class3.yaml"));
-  std::vector<MechanismDataClaim> claims;
-  for (MechanismDataClaim& c : file.claims)
-    if (c.info.id == "koshel.driver5.epsilon1" || c.info.id == "koshel.driver5.epsilon2") {
-      bind_mechanism_claim(c, scene);
-      claims.push_back(c);
-    }
+  const std::vector<MechanismDataClaim> claims =
+      test::bound_claims(scene, class3_source("verify/claims/mechanisms/koshel_class3.yaml"),
+                         {"koshel.driver5.epsilon1", "koshel.driver5.epsilon2"});
   ASSERT_EQ(claims.size(), 2u);
   TopologyProofOptions options;
-  options.seconds = 400;  // wall clock under a sanitizer on a loaded machine; 5-12 s each on an idle core
+  options.seconds = 400;  // wall clock under a sanitizer on a loaded machine; 2-12 s each on an idle core
   const TopologyProofRun run = prove_topology(scene, claims, options);
   ASSERT_EQ(run.claims.size(), 2u);
   for (const TopologyProof& p : run.claims) {
     SCOPED_TRACE(p.info.id);
     EXPECT_EQ(p.verdict, ProofVerdict::ProvedGenerically) << p.error << (p.argument.empty() ? "" : p.argument.back());
-    bool dead_centre = false;
-    for (const auto& e : p.except) dead_centre = dead_centre || e.meaning.find("dead centre") != std::string::npos;
-    EXPECT_TRUE(dead_centre) << "det A = 0 is where the proof does not reach";
+    EXPECT_TRUE(test::names_dead_centre(p)) << "det A = 0 is where the proof does not reach";
   }
 }
 
