@@ -386,9 +386,10 @@ class TopologyProver {
       packed.set_deadline(deadline);
       std::vector<std::pair<ex, ex>> inverses;  // (delta_b, det_b)
       for (const InverseDeterminant& inv : r.inverses) inverses.emplace_back(inv.delta, inv.det);
+      packed.set_inverses(inverses);
       for (const auto& [component, residual] : values.residuals) {
         uses_motion = uses_motion || r.has_inverse(residual) || (driven_otherwise && has_input_rate(r, residual));
-        const ResidualNumerator n = residual_numerator(residual, r, inverses, normalizer, packed);
+        const ResidualNumerator n = residual_numerator(residual, r, normalizer, packed);
         p.numerator_terms += static_cast<int>(n.terms);
         if (n.reduced_terms != 0) return disprove(claim, p, component, n.reduced_terms);
       }
@@ -396,7 +397,7 @@ class TopologyProver {
       p.argument.push_back(fmt::format(
           "lhs - rhs is identically zero as a rational function of the {} coordinates{}{}", config_.names.size(),
           config_.relations.empty() ? "" : " on the unit circles of the axes",
-          p.numerator_terms == 0 ? "" : fmt::format(" (its numerator, {} terms, vanishes there)", p.numerator_terms)));
+          p.numerator_terms == 0 ? "" : fmt::format(" (its numerator, known factors taken out: {} terms, vanishes there)", p.numerator_terms)));
       NamedDegeneracies motion_named{{m.det, "dead centre or change point: det A = 0, the loop closures and the inputs do "
                                             "not determine the velocities"}};
       // What was divided by, as polynomials in the coordinates: det A where the rates enter, the
@@ -481,18 +482,18 @@ class TopologyProver {
     return true;
   }
 
-  // A residual's numerator with r's deltas (`inverses`, as (delta_b, det_b)) cleared (`terms`),
+  // A polynomial that is zero iff the residual is, with r's deltas read as 1 / det_b (`terms`),
   // and the terms left of it once reduced on the circles (0: it vanishes on every
-  // configuration). In packed polynomials (packed_normalizer.h) when they can hold it; in
-  // GiNaC's otherwise. Both compute the same polynomials (tests/proof/packed_normalizer_test.cpp).
+  // configuration). In packed polynomials when they can hold it: the core of the residual's
+  // factored normal form (packed_normalizer.h), `packed` knowing the deltas. Else in GiNaC's: the
+  // numerator of RationalNormalizer's normal form, the deltas cleared.
   struct ResidualNumerator {
     size_t terms = 0, reduced_terms = 0;
   };
-  ResidualNumerator residual_numerator(const ex& residual, const SymbolicMotion& r,
-                                       const std::vector<std::pair<ex, ex>>& inverses, RationalNormalizer& normalizer,
+  ResidualNumerator residual_numerator(const ex& residual, const SymbolicMotion& r, RationalNormalizer& normalizer,
                                        proof_detail::PackedNormalizer& packed) const {
     try {
-      const proof_detail::PackedPolynomial n = proof_detail::clear_inverses(packed.numerator(residual), inverses, packed);
+      const proof_detail::PackedPolynomial n = packed.core(residual);
       return {n.terms(), proof_detail::reduce_on_circles(n, config_.unit_axes, packed).terms()};
     } catch (const proof_detail::PackedUnsupported&) {
     } catch (const proof_detail::PackedOverflow&) {
@@ -618,8 +619,9 @@ class TopologyProver {
   }
 
   void disprove(const MechanismDataClaim& claim, TopologyProof& p, const std::string& component, size_t terms) {
-    const std::string why = fmt::format("lhs - rhs{} is not identically zero: its numerator is a non-zero polynomial of {} "
-                                        "terms", component == "total" ? "" : " (" + component + ")", terms);
+    const std::string why = fmt::format("lhs - rhs{} is not identically zero: its numerator (known factors taken out) is a "
+                                        "non-zero polynomial of {} terms",
+                                        component == "total" ? "" : " (" + component + ")", terms);
     p.argument.push_back(why);
     SampleResult r = sample_claim(scene_, claim, options_.sampling, options_.sampling.count);
     if (r.verdict == TopologyVerdict::Disproved) return take_samples(p, std::move(r), options_.sampling, why);

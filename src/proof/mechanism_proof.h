@@ -19,7 +19,9 @@
 //      code as on a scene (mechanism/mechanism_data_claim.h);
 //   3. lhs - rhs (each component) is brought to a numerator / denominator of expanded
 //      polynomials, the numerator reduced by s_J^2 = 1 - c_J^2 (then it is A + sum s_J B: zero on
-//      the circles iff every part is the zero polynomial).
+//      the circles iff every part is the zero polynomial). In packed polynomials the numerator
+//      is kept with the factors it shares with its parts' divisors taken out, and only the rest
+//      is expanded (proof/packed_normalizer.h).
 // Numerator zero: `proved` when nothing was divided by a non-constant, else `proved_generically`
 // with its exceptional set: the irreducible factors of every divisor (det A; omega(L) - omega(M)
 // of a pole; v x a of a curvature centre; the cross product of meet's two lines; a written
@@ -68,7 +70,7 @@ struct TopologyProof {
   int trials = 0;             ///< holds_with_probability: configurations compared (T)
   long degree_bound = 0;      ///< ... D, the residual numerator's total degree at most
   double failure_bound = 0;   ///< ... the chance that a false claim passes, at most
-  int numerator_terms = 0;    ///< terms of the residual's numerator before the reduction (0: proved)
+  int numerator_terms = 0;    ///< terms of the residual's numerator (its known factors taken out, packed_normalizer.h) before the reduction
   double seconds = 0;
   std::string error;          ///< verdict error: why no verdict (e.g. undefined on every configuration)
   /// A true claim proved (or, not strict, holding on samples); an erratum disproved.

@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <climits>
+#include <cstdlib>
+
 namespace linkproof::proof_detail {
 
 namespace {
@@ -29,6 +33,13 @@ NormalizerOutOfTime PackedNormalizer::out_of_limits(const PackedTooLarge& t) con
                       static_cast<double>(limits_.terms))};
 }
 
+void PackedNormalizer::hold(const PackedPolynomial& p) {
+  held_ += p.terms();
+  if (held_ > limits_.held)
+    throw NormalizerOutOfTime{fmt::format("the normal form's parts hold more than {:.3g} terms, the limit",
+                                          static_cast<double>(limits_.held))};
+}
+
 void PackedNormalizer::check_deadline() const {
   if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out"};
 }
@@ -43,52 +54,164 @@ PackedPolynomial PackedNormalizer::multiply(const PackedPolynomial& a, const Pac
   }
 }
 
-const PackedNormalizer::Fraction& PackedNormalizer::normal(const ex& e) {
+const PackedNormalizer::Factored& PackedNormalizer::normal(const ex& e) {
   const auto it = memo_.find(e);
   if (it != memo_.end()) return it->second;
   check_deadline();
-  Fraction f = compute(e);
+  Factored f = compute(e);
+  hold(f.core);
   return memo_.emplace(e, std::move(f)).first->second;
 }
 
-PackedNormalizer::Fraction PackedNormalizer::sum(const Fraction& a, const Fraction& b) {
-  if (b.num.is_zero()) return a;
-  if (a.num.is_zero()) return b;
+PackedPolynomial PackedNormalizer::numerator(const ex& e) {
+  const Factored& f = normal(e);
+  return multiply(f.core, atom_product(f.powers, 1));
+}
+
+PackedPolynomial PackedNormalizer::denominator(const ex& e) { return atom_product(normal(e).powers, -1); }
+
+std::pair<int, cln::cl_RA> PackedNormalizer::atom_of(const PackedPolynomial& p) {
+  const cln::cl_RA lead = p.coefficients().back();
+  const PackedPolynomial monic = cln::equal(lead, 1) ? p : multiply(p, PackedPolynomial::constant(1 / lead));
+  // A hash that does not depend on the layout: the term count and the leading exponents.
+  size_t hash = monic.terms();
+  for (int v = 0; v < monic.layout().variables; ++v)
+    hash = hash * 1000003u + monic.layout().exponent(monic.keys().back(), v);
+  const auto [first, last] = atom_index_.equal_range(hash);
+  for (auto it = first; it != last; ++it)
+    if (atoms_[static_cast<size_t>(it->second)] == monic) return {it->second, lead};
+  atoms_.push_back(monic);
+  const int id = static_cast<int>(atoms_.size() - 1);
+  atom_index_.emplace(hash, id);
+  return {id, lead};
+}
+
+const PackedPolynomial& PackedNormalizer::atom_power(int atom, int k) {
+  if (k == 1) return atoms_[static_cast<size_t>(atom)];
+  if (const auto it = atom_powers_.find({atom, k}); it != atom_powers_.end()) return it->second;
+  PackedPolynomial p = multiply(atom_power(atom, k - 1), atoms_[static_cast<size_t>(atom)]);
+  hold(p);
+  return atom_powers_.emplace(std::pair{atom, k}, std::move(p)).first->second;
+}
+
+PackedPolynomial PackedNormalizer::atom_product(const std::vector<std::pair<int, int>>& powers, int sign) {
+  PackedPolynomial out = PackedPolynomial::constant(1);
+  for (const auto& [atom, e] : powers)
+    if (e * sign > 0) out = multiply(out, atom_power(atom, e * sign));
+  return out;
+}
+
+int PackedNormalizer::variable_atom(int v) {
+  if (variable_atoms_.size() <= static_cast<size_t>(v)) variable_atoms_.resize(static_cast<size_t>(v) + 1, -1);
+  int& atom = variable_atoms_[static_cast<size_t>(v)];
+  if (atom < 0) atom = atom_of(PackedPolynomial::variable(v)).first;
+  return atom;
+}
+
+PackedNormalizer::Factored PackedNormalizer::without_content(Factored f) {
+  const std::array<uint32_t, kMaxPackedVariables> least = f.core.least_exponents();
+  Factored content{PackedPolynomial::constant(1), {}};
+  for (int v = 0; v < f.core.layout().variables; ++v)
+    if (least[v] != 0) content.powers.emplace_back(variable_atom(v), static_cast<int>(least[v]));
+  if (content.powers.empty()) return f;
+  std::sort(content.powers.begin(), content.powers.end());
+  f.core = f.core.divided_by_monomial(least);
+  return product(f, content);
+}
+
+PackedNormalizer::Factored PackedNormalizer::sum(const Factored& a, const Factored& b) {
+  if (b.core.is_zero()) return a;
+  if (a.core.is_zero()) return b;
   try {
-    if (a.den == b.den) return {a.num + b.num, a.den};
-    return {multiply(a.num, b.den) + multiply(b.num, a.den), multiply(a.den, b.den)};
+    if (a.powers == b.powers) {
+      Factored out{a.core + b.core, a.powers};
+      if (out.core.is_zero()) out.powers.clear();
+      return without_content(std::move(out));
+    }
+    // The common power of each atom, min(e, f) (an atom one side lacks has exponent 0 there),
+    // and each core times the powers the other side has more of.
+    Factored out;
+    PackedPolynomial x = a.core, y = b.core;
+    size_t i = 0, j = 0;
+    while (i < a.powers.size() || j < b.powers.size()) {
+      const int atom_a = i < a.powers.size() ? a.powers[i].first : INT_MAX;
+      const int atom_b = j < b.powers.size() ? b.powers[j].first : INT_MAX;
+      const int atom = std::min(atom_a, atom_b);
+      const int e = atom_a == atom ? a.powers[i++].second : 0;
+      const int f = atom_b == atom ? b.powers[j++].second : 0;
+      const int common = std::min(e, f);
+      if (common != 0) out.powers.emplace_back(atom, common);
+          if (e > common) x = multiply(x, atom_power(atom, e - common));
+      if (f > common) y = multiply(y, atom_power(atom, f - common));
+      check_deadline();
+    }
+    out.core = x + y;
+    if (out.core.is_zero()) out.powers.clear();
+    return without_content(std::move(out));
   } catch (const PackedOverflow&) {
     throw PackedUnsupported{"exponents that need more than 127 bits"};
   }
 }
 
-PackedNormalizer::Fraction PackedNormalizer::product(const Fraction& a, const Fraction& b) {
-  if (a.num.is_zero() || b.num.is_zero()) return {PackedPolynomial{}, PackedPolynomial::constant(1)};
-  return {multiply(a.num, b.num), multiply(a.den, b.den)};
+PackedNormalizer::Factored PackedNormalizer::product(const Factored& a, const Factored& b) {
+  if (a.core.is_zero() || b.core.is_zero()) return {};
+  Factored out{multiply(a.core, b.core), {}};
+  size_t i = 0, j = 0;
+  while (i < a.powers.size() || j < b.powers.size()) {
+    const int atom_a = i < a.powers.size() ? a.powers[i].first : INT_MAX;
+    const int atom_b = j < b.powers.size() ? b.powers[j].first : INT_MAX;
+    const int atom = std::min(atom_a, atom_b);
+    const int e = (atom_a == atom ? a.powers[i++].second : 0) + (atom_b == atom ? b.powers[j++].second : 0);
+    if (e != 0) out.powers.emplace_back(atom, e);  // a divisor times itself cancels here
+  }
+  return out;
 }
 
-PackedNormalizer::Fraction PackedNormalizer::compute(const ex& e) {
-  const PackedPolynomial one = PackedPolynomial::constant(1);
-  if (GiNaC::is_a<GiNaC::symbol>(e)) return {PackedPolynomial::variable(variable(e)), one};
+PackedNormalizer::Factored PackedNormalizer::inverse(const Factored& a) {
+  if (a.core.is_zero()) throw GiNaC::pole_error("PackedNormalizer: division by an identically zero expression", 1);
+  const Factored whole = without_content(a);  // sums take the content out already: cheap
+  Factored out;
+  for (const auto& [atom, e] : whole.powers) out.powers.emplace_back(atom, -e);
+  if (whole.core.terms() == 1 && whole.core.keys().front() == 0) {  // a number
+    out.core = PackedPolynomial::constant(1 / whole.core.coefficients().front());
+    return out;
+  }
+  const auto [atom, lead] = atom_of(whole.core);
+  out.core = PackedPolynomial::constant(1 / lead);
+  return product(out, Factored{PackedPolynomial::constant(1), {{atom, -1}}});
+}
+
+PackedNormalizer::Factored PackedNormalizer::power(const Factored& a, int k) {
+  if (k == 0) return {PackedPolynomial::constant(1), {}};
+  const Factored base = k > 0 ? a : inverse(a);
+  Factored out{PackedPolynomial::constant(1), {}};
+  for (int i = 0; i < std::abs(k); ++i) out = product(out, base);
+  return out;
+}
+
+PackedNormalizer::Factored PackedNormalizer::compute(const ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    if (const auto inverse_of = inverses_.find(e); inverse_of != inverses_.end()) return inverse(normal(inverse_of->second));
+    return {PackedPolynomial::constant(1), {{variable_atom(variable(e)), 1}}};
+  }
   if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) {
     const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
     if (!n.is_rational()) throw PackedUnsupported{"a number that is not rational"};
-    return {PackedPolynomial::constant(rational(n)), one};
+    return {PackedPolynomial::constant(rational(n)), {}};
   }
   if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
-    Fraction acc{PackedPolynomial{}, one};
+    Factored acc;
     for (size_t i = 0; i < e.nops(); ++i) {
-      const Fraction& term = normal(e.op(i));
+      const Factored& term = normal(e.op(i));
       check_deadline();
       acc = sum(acc, term);
     }
-    if (acc.num.is_zero()) acc.den = one;
     return acc;
   }
   if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
-    Fraction acc{one, one};
+    Factored acc{PackedPolynomial::constant(1), {}};
     for (size_t i = 0; i < e.nops(); ++i) {
-      const Fraction& factor = normal(e.op(i));
+      const Factored& factor = normal(e.op(i));
       check_deadline();
       acc = product(acc, factor);
     }
@@ -96,19 +219,9 @@ PackedNormalizer::Fraction PackedNormalizer::compute(const ex& e) {
   }
   if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1)) &&
       GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer()) {
-    const Fraction& b = normal(e.op(0));
-    const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(e.op(1));
-    if (k.is_zero()) return {one, one};
-    const unsigned exponent = static_cast<unsigned>(k.is_positive() ? k.to_int() : -k.to_int());
+    const Factored& b = normal(e.op(0));
     check_deadline();
-    const auto power = [&](const PackedPolynomial& p) {
-      PackedPolynomial out = one;
-      for (unsigned i = 0; i < exponent; ++i) out = multiply(out, p);
-      return out;
-    };
-    if (k.is_positive()) return {power(b.num), power(b.den)};
-    if (b.num.is_zero()) throw GiNaC::pole_error("PackedNormalizer: division by an identically zero expression", 1);
-    return {power(b.den), power(b.num)};
+    return power(b, GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int());
   }
   throw PackedUnsupported{"an operation that is not rational"};
 }
@@ -122,20 +235,6 @@ GiNaC::ex PackedNormalizer::to_ex(const PackedPolynomial& p) const {
     terms.push_back(t);
   }
   return GiNaC::dynallocate<GiNaC::add>(terms);
-}
-
-PackedPolynomial clear_inverses(PackedPolynomial p, const std::vector<std::pair<ex, ex>>& inverses, PackedNormalizer& n) {
-  for (const auto& [delta, det] : inverses) {
-    const std::vector<PackedPolynomial> c = p.coefficients_in(n.variable(delta));
-    if (c.size() < 2) continue;
-    const PackedPolynomial& d = n.numerator(det);
-    size_t i = 0;
-    while (c[i].is_zero()) ++i;
-    PackedPolynomial out = c[i];
-    for (++i; i < c.size(); ++i) out = n.multiply(out, d) + c[i];
-    p = std::move(out);
-  }
-  return p;
 }
 
 PackedPolynomial reduce_on_circles(PackedPolynomial p, const std::vector<std::pair<ex, ex>>& axes, PackedNormalizer& n) {

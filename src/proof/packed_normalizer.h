@@ -1,21 +1,31 @@
-// The normal form of RationalNormalizer(cancel = false) (rational_normal.h), computed in packed
-// polynomials (packed_polynomial.h): the same numerator and denominator, term for term, at the
-// cost of hash-table arithmetic instead of GiNaC's expansion. Private to src/proof.
+// A normal form of rational expressions in packed polynomials (packed_polynomial.h), for the
+// mechanism proofs' zero tests. Private to src/proof.
 //
-// It walks the expression DAG once per distinct node (memoised by structural equality) and
-// combines the children's fractions by the same rules, without gcds:
-//   a/b + c/d = (a d + c b) / (b d), or (a + c) / b when b = d;  (a/b)(c/d) = (a c) / (b d);
-//   integer powers; a rational number p/q is itself over 1.
-// Every step is an identity of rational functions, so the numerator is the zero polynomial iff
-// the expression is identically zero. What it cannot represent (a function such as abs, a
-// non-rational number, more than 64 symbols, exponents past 128 bits) throws PackedUnsupported:
-// the caller takes GiNaC's route instead. Past the deadline, or about to pass a product's limits
-// (its terms, its partial products), it throws NormalizerOutOfTime as RationalNormalizer does.
+// Every value is kept as core x prod_k atom_k^e_k: `core` a polynomial, the atoms polynomials
+// met as divisors (each stored once, monic: its leading coefficient moved into the core), the
+// exponents non-zero integers (negative: a denominator). It walks the expression DAG once per
+// distinct node (memoised by structural equality) and combines the children without gcds:
+//   products add exponents (an atom divided by itself cancels: no polynomial is multiplied);
+//   a sum takes out the atoms' common power, min(e_k, f_k) per atom, and multiplies each core by
+//   the atom powers the other has more of: the sum of fractions over their least common
+//   denominator as a product of atoms, and of their common atom factors;
+//   a quotient makes the divisor's core an atom (a constant core is a number).
+// RationalNormalizer(false) (rational_normal.h) multiplies whole denominators instead, so a
+// nested construction whose parts share divisors (a point built from points built from the same
+// lines) squares them at every level; here they are taken once.
+//
+// Every step is an identity of rational functions and every atom is a non-zero polynomial, so
+// the expression is identically zero iff its core is the zero polynomial. What it cannot
+// represent (a function such as abs, a non-rational number, more than 64 symbols, exponents past
+// 127 bits) throws PackedUnsupported: the caller takes GiNaC's route instead. Past the deadline,
+// about to pass a product's limits (its terms, its partial products), or holding more terms in
+// all than its limit allows (memory), it throws NormalizerOutOfTime as RationalNormalizer does.
 #pragma once
 
 #include <ginac/ginac.h>
 
 #include <chrono>
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -34,16 +44,29 @@ struct PackedUnsupported {
 
 class PackedNormalizer {
  public:
-  struct Fraction {
-    PackedPolynomial num, den;
+  /// core x prod atom^exponent; zero: a zero core and no powers.
+  struct Factored {
+    PackedPolynomial core;
+    std::vector<std::pair<int, int>> powers;  ///< (atom, exponent != 0), by atom
   };
   void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
   /// What one product may cost before NormalizerOutOfTime (packed_polynomial.h).
   void set_limits(const PackedLimits& limits) { limits_ = limits; }
+  /// Symbols that stand for 1 / polynomial (a motion's delta_b = 1 / det_b): each is read as
+  /// its polynomial's inverse, so no core holds them. Before the first normal().
+  void set_inverses(const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& inverses) {
+    for (const auto& [symbol, polynomial] : inverses) inverses_.emplace(symbol, polynomial);
+  }
 
-  /// The normal form of e (GiNaC::pole_error if a denominator is identically 0).
-  const Fraction& normal(const GiNaC::ex& e);
-  const PackedPolynomial& numerator(const GiNaC::ex& e) { return normal(e).num; }
+  /// The normal form of e (GiNaC::pole_error if a divisor is identically 0).
+  const Factored& normal(const GiNaC::ex& e);
+  /// e's core: the zero polynomial iff e is identically zero.
+  const PackedPolynomial& core(const GiNaC::ex& e) { return normal(e).core; }
+  /// e as a fraction: the core times the atoms of positive exponent, over the others.
+  PackedPolynomial numerator(const GiNaC::ex& e);
+  PackedPolynomial denominator(const GiNaC::ex& e);
+  /// The atoms met so far (monic polynomials).
+  const std::vector<PackedPolynomial>& atoms() const { return atoms_; }
   /// The index of symbol s in this normalizer's polynomials (assigned on first use).
   int variable(const GiNaC::ex& s);
   /// a b under this normalizer's deadline and term limit.
@@ -52,23 +75,37 @@ class PackedNormalizer {
   GiNaC::ex to_ex(const PackedPolynomial& p) const;
 
  private:
-  Fraction compute(const GiNaC::ex& e);
-  Fraction sum(const Fraction& a, const Fraction& b);
-  Fraction product(const Fraction& a, const Fraction& b);
+  Factored compute(const GiNaC::ex& e);
+  Factored sum(const Factored& a, const Factored& b);
+  Factored product(const Factored& a, const Factored& b);
+  Factored inverse(const Factored& a);
+  Factored power(const Factored& a, int k);
+  /// The atom of polynomial p (registered if new) and the constant c with p = c atom.
+  std::pair<int, cln::cl_RA> atom_of(const PackedPolynomial& p);
+  /// The atom of the polynomial x_v.
+  int variable_atom(int v);
+  /// f with its core's monomial content moved into its variables' atoms.
+  Factored without_content(Factored f);
+  /// atom^k (k > 0), cached.
+  const PackedPolynomial& atom_power(int atom, int k);
+  /// The product of the atom powers with exponents of sign `sign` (+1 or -1), as a polynomial.
+  PackedPolynomial atom_product(const std::vector<std::pair<int, int>>& powers, int sign);
   void check_deadline() const;
+  /// Counts p's terms as held (memo, caches); past limits_.held, NormalizerOutOfTime.
+  void hold(const PackedPolynomial& p);
   NormalizerOutOfTime out_of_limits(const PackedTooLarge& t) const;
-  std::unordered_map<GiNaC::ex, Fraction, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
+  std::unordered_map<GiNaC::ex, Factored, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
+  std::vector<PackedPolynomial> atoms_;
+  std::unordered_multimap<size_t, int> atom_index_;
+  std::vector<int> variable_atoms_;  // per variable: its atom, or -1  // hash of an atom's terms -> atom
+  std::map<std::pair<int, int>, PackedPolynomial> atom_powers_;  // (atom, k >= 2) -> atom^k
   std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> index_;
   std::vector<GiNaC::ex> symbols_;
   std::optional<std::chrono::steady_clock::time_point> deadline_;
   PackedLimits limits_;
+  size_t held_ = 0;
+  std::unordered_map<GiNaC::ex, GiNaC::ex, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> inverses_;
 };
-
-/// det_b^k p for each (delta_b, det_b) in turn, k = p's degree in delta_b: p with every
-/// delta_b = 1/det_b cleared, as clear_delta does it in GiNaC (Horner's rule from the lowest
-/// power of delta_b present).
-PackedPolynomial clear_inverses(PackedPolynomial p, const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& inverses,
-                                PackedNormalizer& n);
 
 /// p reduced by s^2 = 1 - c^2 for every unit axis (c, s): zero iff p vanishes on the circles.
 PackedPolynomial reduce_on_circles(PackedPolynomial p, const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& axes,

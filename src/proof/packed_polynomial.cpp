@@ -193,6 +193,33 @@ uint32_t PackedPolynomial::degree(int v) const {
   return d;
 }
 
+std::array<uint32_t, kMaxPackedVariables> PackedPolynomial::least_exponents() const {
+  std::array<uint32_t, kMaxPackedVariables> least{};
+  if (keys_.empty()) return least;
+  std::vector<int> open;  // the variables whose least exponent is not 0 yet
+  for (int v = 0; v < layout_.variables; ++v)
+    if ((least[v] = layout_.exponent(keys_.front(), v)) != 0) open.push_back(v);
+  for (size_t i = 1; i < keys_.size() && !open.empty(); ++i) {
+    for (size_t j = 0; j < open.size();) {
+      const int v = open[j];
+      least[v] = std::min(least[v], layout_.exponent(keys_[i], v));
+      if (least[v] == 0) open[j] = open.back(), open.pop_back();
+      else ++j;
+    }
+  }
+  return least;
+}
+
+PackedPolynomial PackedPolynomial::divided_by_monomial(const std::array<uint32_t, kMaxPackedVariables>& by) const {
+  PackedKey k = 0;
+  for (int v = 0; v < layout_.variables; ++v) k += static_cast<PackedKey>(by[v]) << layout_.shift[v];
+  if (k == 0) return *this;
+  // Every field of every key holds at least `by`'s: no borrows, and the order is kept.
+  PackedPolynomial out = *this;
+  for (PackedKey& key : out.keys_) key -= k;
+  return out;
+}
+
 PackedPolynomial PackedPolynomial::repacked(const PackedLayout& to) const {
   if (layout_.same_fields(to)) return PackedPolynomialBuilder::make(to, keys_, coefficients_);
   // `to` widens fields only, so each field moves up by its shift's growth; runs of adjacent

@@ -39,6 +39,7 @@ struct PackedOverflow {};
 struct PackedLimits {
   size_t terms = 16'000'000;  // about 0.8 GB at the peak of a product
   size_t products = 50'000'000;  // seconds
+  size_t held = 25'000'000;  // terms a normal form's memo and caches hold at once: about 1.2 GB
 };
 /// A product was about to pass a limit: the terms it held, or the partial products it needs.
 struct PackedTooLarge {
@@ -80,6 +81,12 @@ class PackedPolynomial {
   /// The same polynomial in the layout `to`, whose fields are nowhere narrower than this one's;
   /// sorted order is kept.
   PackedPolynomial repacked(const PackedLayout& to) const;
+
+  /// The monomial content: per variable, the least exponent among the terms (all 0 for the
+  /// zero polynomial).
+  std::array<uint32_t, kMaxPackedVariables> least_exponents() const;
+  /// This divided by the monomial of exponents `by` (at most least_exponents(), per variable).
+  PackedPolynomial divided_by_monomial(const std::array<uint32_t, kMaxPackedVariables>& by) const;
 
   /// The polynomials c_k with this = sum_k c_k v^k (c_k free of v), k = 0 .. degree(v).
   std::vector<PackedPolynomial> coefficients_in(int v) const;
