@@ -276,9 +276,9 @@ class TopologyProver {
       if (motion_->note.empty()) r.det_terms = static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(motion_->det) ? motion_->det.nops() : 1);
       r.groups = motion_->block_sizes;
     }
-    if (route_) {
-      r.proof_driver = scene_.linkage.link_names()[static_cast<size_t>(route_->inputs.front().index)];
-      r.proof_driver_groups = route_->block_sizes;
+    if (!routes_.empty()) {
+      r.proof_driver = driver_name(*routes_.front());
+      r.proof_driver_groups = routes_.front()->block_sizes;
     }
     r.seconds = since(start);
     return r;
@@ -291,21 +291,26 @@ class TopologyProver {
     return *motion_;
   }
 
-  // The motion the residuals are normalized in: driven by the link whose groups are smallest
-  // when that is not the scene's driver (symbolic_motion.h says why a proof there is a proof).
-  const SymbolicMotion& route() {
-    if (!route_chosen_) {
-      route_chosen_ = true;
-      for (const MechanismInput& in : better_proof_drivers(scene_)) {
-        const std::string& link = scene_.linkage.link_names()[static_cast<size_t>(in.index)];
-        const std::vector<InputValue<ex>> rates{{GiNaC::symbol("w_" + link + "_driver"), GiNaC::symbol("wd_" + link + "_driver")}};
-        auto m = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_, {in}, rates));
-        if (m->singular_everywhere || !m->note.empty() || vanishes_on_circles(m->det)) continue;
-        route_ = std::move(m);
-        break;
-      }
+  // The k-th motion the residuals may be normalized in (nullptr past the last): driven by the
+  // links whose groups are smaller than the scene's driver's, smallest first (symbolic_motion.h
+  // says why a proof there is a proof), else the scene's own. Drivers with groups of the same
+  // sizes give normal forms of different sizes: one may fit the limits where another does not.
+  const SymbolicMotion* route(size_t k) {
+    if (!candidates_) candidates_ = better_proof_drivers(scene_);
+    while (routes_.size() <= k && next_candidate_ < candidates_->size()) {
+      const MechanismInput& in = (*candidates_)[next_candidate_++];
+      const std::string& link = scene_.linkage.link_names()[static_cast<size_t>(in.index)];
+      const std::vector<InputValue<ex>> rates{{GiNaC::symbol("w_" + link + "_driver"), GiNaC::symbol("wd_" + link + "_driver")}};
+      auto m = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_, {in}, rates));
+      if (m->singular_everywhere || !m->note.empty() || vanishes_on_circles(m->det)) continue;
+      routes_.push_back(std::move(m));
     }
-    return route_ ? *route_ : motion();
+    if (k < routes_.size()) return routes_[k].get();
+    return routes_.empty() && k == 0 ? &motion() : nullptr;
+  }
+
+  std::string driver_name(const SymbolicMotion& r) const {
+    return scene_.linkage.link_names()[static_cast<size_t>(r.inputs.front().index)];
   }
 
   static bool has_input_rate(const SymbolicMotion& m, const ex& e) {
@@ -371,69 +376,90 @@ class TopologyProver {
       // Undefined for free rates (e.g. omega(L) - omega(M) is 0 for every rate): decided below.
     } catch (const GiNaC::pole_error&) {
     }
-    try {
-      // The residual in the motion of the driver with the smallest groups (symbolic_motion.h):
-      // the scene's own unless another link splits the system further.
-      const SymbolicMotion& r = route();
-      const bool driven_otherwise = &r != &m;
-      const MechanismFrameOf<ex> frame(scene_, r.motion, config_.joint_at, config_.point_at, config_.axis, true);
-      const ClaimValues values = claim_values(claim, frame);
-      RationalNormalizer normalizer(false);  // the denominators are known: no gcds (rational_normal.h)
-      normalizer.set_term_limit(kTermLimit);
-      normalizer.set_deadline(deadline);
-      bool uses_motion = false;
-      proof_detail::PackedNormalizer packed;
-      packed.set_deadline(deadline);
-      std::vector<std::pair<ex, ex>> inverses;  // (delta_b, det_b)
-      for (const InverseDeterminant& inv : r.inverses) inverses.emplace_back(inv.delta, inv.det);
-      packed.set_inverses(inverses);
-      for (const auto& [component, residual] : values.residuals) {
-        uses_motion = uses_motion || r.has_inverse(residual) || (driven_otherwise && has_input_rate(r, residual));
-        const ResidualNumerator n = residual_numerator(residual, r, normalizer, packed);
-        p.numerator_terms += static_cast<int>(n.terms);
-        if (n.reduced_terms != 0) return disprove(claim, p, component, n.reduced_terms);
+    // The residual in the motion of the driver with the smallest groups (symbolic_motion.h),
+    // the scene's own unless another link splits the system further; past a size limit there,
+    // in the next such driver's.
+    for (size_t k = 0;; ++k) {
+      const SymbolicMotion& r = *route(k);
+      const TopologyProof before = p;
+      try {
+        return decide_in(r, claim, p, deadline);
+      } catch (const UndefinedQuantity& u) {
+        p.verdict = ProofVerdict::Error;
+        p.error = fmt::format("undefined on every configuration of the topology: {}: {}", u.quantity(), u.reason());
+      } catch (const GiNaC::pole_error&) {
+        p.verdict = ProofVerdict::Error;
+        p.error = "undefined on every configuration of the topology: a division by an expression that is identically 0";
+      } catch (const proof_detail::NormalizerOutOfTime& limit) {
+        const std::string why = fmt::format("no symbolic normal form within the budget ({})", limit.why);
+        if (!limit.deadline && route(k + 1) != nullptr) {
+          p = before;
+          p.argument.push_back(fmt::format("with link {} as the driver: {}; link {} drives next", driver_name(r), why,
+                                           driver_name(*route(k + 1))));
+          continue;
+        }
+        identity_test(claim, p, m, why);
       }
-      if (driven_otherwise) p.argument.push_back(driver_argument(r));
-      p.argument.push_back(fmt::format(
-          "lhs - rhs is identically zero as a rational function of the {} coordinates{}{}", config_.names.size(),
-          config_.relations.empty() ? "" : " on the unit circles of the axes",
-          p.numerator_terms == 0 ? "" : fmt::format(" (its numerator, known factors taken out: {} terms, vanishes there)", p.numerator_terms)));
-      NamedDegeneracies motion_named{{m.det, "dead centre or change point: det A = 0, the loop closures and the inputs do "
-                                            "not determine the velocities"}};
-      // What was divided by, as polynomials in the coordinates: det A where the rates enter, the
-      // claim's own divisors as written (GiNaC simplifies x/x to 1 when it builds an expression:
-      // the words' degeneracies keep them), and the divisors left in the expressions. With
-      // another driver they are the scene's only if they contain no rate; else they are taken
-      // again in the scene's own motion.
-      ClaimDivisors claim_divisors = divisors_of(claim, r, frame, values, normalizer);
-      if (driven_otherwise && claim_divisors.depend_on(r)) {
-        const MechanismFrameOf<ex> own(scene_, m.motion, config_.joint_at, config_.point_at, config_.axis, true);
-        claim_divisors = divisors_of(claim, m, own, claim_values(claim, own), normalizer);
-      }
-      const NamedDegeneracies& claim_named = claim_divisors.named;
-      std::vector<ex> divisors;
-      if (uses_motion) divisors.push_back(m.det);
-      for (const auto& [poly, meaning] : claim_named) {
-        if (vanishes_on_circles(poly)) return undefined_everywhere(p, meaning);
-        divisors.push_back(poly);
-      }
-      divisors.insert(divisors.end(), claim_divisors.left.begin(), claim_divisors.left.end());
-      const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
-          divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
-      if (!take_exceptions(p, factors, [&](const ex& f) { return vanishes_on_circles(f); })) return;
-      p.verdict = p.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
-      p.argument.push_back(p.except.empty() ? std::string("no division by a non-constant: it holds on every configuration")
-                                            : fmt::format("it holds on every configuration outside the zero sets of the {} "
-                                                          "factor(s) listed", p.except.size()));
-    } catch (const UndefinedQuantity& u) {
-      p.verdict = ProofVerdict::Error;
-      p.error = fmt::format("undefined on every configuration of the topology: {}: {}", u.quantity(), u.reason());
-    } catch (const GiNaC::pole_error&) {
-      p.verdict = ProofVerdict::Error;
-      p.error = "undefined on every configuration of the topology: a division by an expression that is identically 0";
-    } catch (const proof_detail::NormalizerOutOfTime& limit) {
-      identity_test(claim, p, m, fmt::format("no symbolic normal form within the budget ({})", limit.why));
+      return;
     }
+  }
+
+  // Steps 1-3 with the residual in motion r (the header comment): proved, proved generically or
+  // disproved into p. Throws what the normal forms throw.
+  void decide_in(const SymbolicMotion& r, const MechanismDataClaim& claim, TopologyProof& p,
+                 ProofClock::time_point deadline) {
+    const SymbolicMotion& m = motion();
+    const bool driven_otherwise = &r != &m;
+    const MechanismFrameOf<ex> frame(scene_, r.motion, config_.joint_at, config_.point_at, config_.axis, true);
+    const ClaimValues values = claim_values(claim, frame);
+    RationalNormalizer normalizer(false);  // the denominators are known: no gcds (rational_normal.h)
+    normalizer.set_term_limit(kTermLimit);
+    normalizer.set_deadline(deadline);
+    bool uses_motion = false;
+    proof_detail::PackedNormalizer packed;
+    packed.set_deadline(deadline);
+    packed.set_limits(options_.packed_limits);
+    std::vector<std::pair<ex, ex>> inverses;  // (delta_b, det_b)
+    for (const InverseDeterminant& inv : r.inverses) inverses.emplace_back(inv.delta, inv.det);
+    packed.set_inverses(inverses);
+    for (const auto& [component, residual] : values.residuals) {
+      uses_motion = uses_motion || r.has_inverse(residual) || (driven_otherwise && has_input_rate(r, residual));
+      const ResidualNumerator n = residual_numerator(residual, r, normalizer, packed);
+      p.numerator_terms += static_cast<int>(n.terms);
+      if (n.reduced_terms != 0) return disprove(claim, p, component, n.reduced_terms);
+    }
+    if (driven_otherwise) p.argument.push_back(driver_argument(r));
+    p.argument.push_back(fmt::format(
+        "lhs - rhs is identically zero as a rational function of the {} coordinates{}{}", config_.names.size(),
+        config_.relations.empty() ? "" : " on the unit circles of the axes",
+        p.numerator_terms == 0 ? "" : fmt::format(" (its numerator, known factors taken out: {} terms, vanishes there)", p.numerator_terms)));
+    NamedDegeneracies motion_named{{m.det, "dead centre or change point: det A = 0, the loop closures and the inputs do "
+                                          "not determine the velocities"}};
+    // What was divided by, as polynomials in the coordinates: det A where the rates enter, the
+    // claim's own divisors as written (GiNaC simplifies x/x to 1 when it builds an expression:
+    // the words' degeneracies keep them), and the divisors left in the expressions. With
+    // another driver they are the scene's only if they contain no rate; else they are taken
+    // again in the scene's own motion.
+    ClaimDivisors claim_divisors = divisors_of(claim, r, frame, values, normalizer);
+    if (driven_otherwise && claim_divisors.depend_on(r)) {
+      const MechanismFrameOf<ex> own(scene_, m.motion, config_.joint_at, config_.point_at, config_.axis, true);
+      claim_divisors = divisors_of(claim, m, own, claim_values(claim, own), normalizer);
+    }
+    const NamedDegeneracies& claim_named = claim_divisors.named;
+    std::vector<ex> divisors;
+    if (uses_motion) divisors.push_back(m.det);
+    for (const auto& [poly, meaning] : claim_named) {
+      if (vanishes_on_circles(poly)) return undefined_everywhere(p, meaning);
+      divisors.push_back(poly);
+    }
+    divisors.insert(divisors.end(), claim_divisors.left.begin(), claim_divisors.left.end());
+    const std::vector<proof_detail::NamedFactor> factors = proof_detail::divisor_factors(
+        divisors, {[&] { return motion_named; }, [&] { return claim_named; }}, normalizer, true);
+    if (!take_exceptions(p, factors, [&](const ex& f) { return vanishes_on_circles(f); })) return;
+    p.verdict = p.except.empty() ? ProofVerdict::Proved : ProofVerdict::ProvedGenerically;
+    p.argument.push_back(p.except.empty() ? std::string("no division by a non-constant: it holds on every configuration")
+                                          : fmt::format("it holds on every configuration outside the zero sets of the {} "
+                                                        "factor(s) listed", p.except.size()));
   }
 
   // Step 0 (the header comment): lhs - rhs with every rate a free symbol. True if it decided
@@ -634,8 +660,9 @@ class TopologyProver {
   TopologyProofOptions options_;
   SymbolicConfiguration config_ = symbolic_configuration(scene_);
   std::unique_ptr<SymbolicMotion> motion_;
-  std::unique_ptr<SymbolicMotion> route_;  // set when another driver is used
-  bool route_chosen_ = false;
+  std::optional<std::vector<MechanismInput>> candidates_;  // better drivers than the scene's
+  size_t next_candidate_ = 0;
+  std::vector<std::unique_ptr<SymbolicMotion>> routes_;  // those built and usable, in order
 };
 
 }  // namespace

@@ -50,6 +50,7 @@
 #include "linkproof/check/check.h"
 #include "linkproof/mechanism/mechanism_scene.h"
 #include "proof/mechanism_sampling.h"
+#include "proof/packed_polynomial.h"
 #include "proof/prove.h"
 
 namespace linkproof {
@@ -58,6 +59,7 @@ struct TopologyProofOptions {
   double seconds = 60;        ///< budget of the symbolic work per claim
   TopologySampling sampling;  ///< the counterexample search, and the samples when no proof is made
   int quick_samples = 4;      ///< configurations tried before the symbolic work (a fast disproof)
+  proof_detail::PackedLimits packed_limits;  ///< what one normal form may cost (packed_polynomial.h)
 };
 
 struct TopologyProof {

@@ -41,7 +41,7 @@ void PackedNormalizer::hold(const PackedPolynomial& p) {
 }
 
 void PackedNormalizer::check_deadline() const {
-  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out"};
+  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out", true};
 }
 
 PackedPolynomial PackedNormalizer::multiply(const PackedPolynomial& a, const PackedPolynomial& b) {

@@ -151,7 +151,7 @@ Fraction RationalNormalizer::compute(const ex& e) {
 }
 
 void RationalNormalizer::check_deadline() const {
-  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out"};
+  if (deadline_ && std::chrono::steady_clock::now() > *deadline_) throw NormalizerOutOfTime{"the time budget ran out", true};
 }
 
 void RationalNormalizer::check_product_size(const ex& a, const ex& b, int power) const {

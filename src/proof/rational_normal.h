@@ -40,6 +40,7 @@ struct Fraction {
 /// than its limit (one such expansion could outlast any deadline): `why` says which.
 struct NormalizerOutOfTime {
   std::string why;
+  bool deadline = false;  ///< the time budget ran out (else a size limit was reached)
 };
 
 class RationalNormalizer {

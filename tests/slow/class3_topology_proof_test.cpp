@@ -7,6 +7,7 @@
 // proof/packed_normalizer.h: the plan's divisors taken once, not once per level of nesting.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,39 @@ TEST(ClassThreeTopologyProof, TheSuperpositionRulesForEpsilonThreeAndFiveAreProv
     EXPECT_EQ(p.verdict, ProofVerdict::ProvedGenerically) << p.error << (p.argument.empty() ? "" : p.argument.back());
     EXPECT_TRUE(test::names_dead_centre(p)) << "det A = 0 is where the proof does not reach";
   }
+}
+
+// The plan for epsilon3 under a cap on the terms a normal form holds (PackedLimits::held): in
+// link 3's motion it needs 2,200-2,400 terms, in link 5's 1,600-1,700 (both drivers split the
+// system into groups of 1, 2, 2, 1, 2, 1; the plan is built from link 5).
+TopologyProof epsilon_three_held_to(size_t held) {
+  const MechanismScene scene = load_mechanism_scene(class3_source("verify/scenes/mechanisms/seed003_class3.yaml"));
+  const std::vector<MechanismDataClaim> claims =
+      test::bound_claims(scene, class3_source("verify/claims/mechanisms/koshel_class3.yaml"), {"koshel.driver5.epsilon3"});
+  TopologyProofOptions options;
+  options.seconds = 400;
+  options.packed_limits.held = held;
+  TopologyProofRun run = prove_topology(scene, claims, options);
+  return run.claims.at(0);
+}
+
+bool argues(const TopologyProof& p, const std::string& text) {
+  return std::any_of(p.argument.begin(), p.argument.end(), [&](const std::string& a) { return a.find(text) != std::string::npos; });
+}
+
+TEST(ClassThreeTopologyProof, PastTheLimitsWithOneDriverTheNextDriverIsTried) {
+  const TopologyProof p = epsilon_three_held_to(1950);
+  EXPECT_EQ(p.verdict, ProofVerdict::ProvedGenerically) << p.error << testing::PrintToString(p.argument);
+  EXPECT_TRUE(argues(p, "with link 3 as the driver: no symbolic normal form within the budget")) << testing::PrintToString(p.argument);
+  EXPECT_TRUE(argues(p, "link 5 drives next"));
+  EXPECT_TRUE(argues(p, "solved with link 5 as the driver"));
+}
+
+TEST(ClassThreeTopologyProof, PastTheLimitsWithEveryDriverTheIdentityTestDecides) {
+  const TopologyProof p = epsilon_three_held_to(300);
+  EXPECT_EQ(p.verdict, ProofVerdict::HoldsWithProbability) << p.error << testing::PrintToString(p.argument);
+  EXPECT_TRUE(argues(p, "link 5 drives next")) << testing::PrintToString(p.argument);
+  EXPECT_TRUE(argues(p, "randomized identity test"));
 }
 
 }  // namespace
