@@ -80,6 +80,7 @@ std::pair<int, cln::cl_RA> PackedNormalizer::atom_of(const PackedPolynomial& p) 
   const auto [first, last] = atom_index_.equal_range(hash);
   for (auto it = first; it != last; ++it)
     if (atoms_[static_cast<size_t>(it->second)] == monic) return {it->second, lead};
+  hold(monic);
   atoms_.push_back(monic);
   const int id = static_cast<int>(atoms_.size() - 1);
   atom_index_.emplace(hash, id);

@@ -1,18 +1,23 @@
 // A normal form of rational expressions in packed polynomials (packed_polynomial.h), for the
 // mechanism proofs' zero tests. Private to src/proof.
 //
-// Every value is kept as core x prod_k atom_k^e_k: `core` a polynomial, the atoms polynomials
-// met as divisors (each stored once, monic: its leading coefficient moved into the core), the
-// exponents non-zero integers (negative: a denominator). It walks the expression DAG once per
-// distinct node (memoised by structural equality) and combines the children without gcds:
+// Every value is kept as core x prod_k atom_k^e_k: `core` a polynomial, the exponents non-zero
+// integers (negative: a denominator), each atom a polynomial stored once, monic (its leading
+// coefficient moved into the core): a polynomial met as a divisor, or a single symbol (the
+// core's monomial content: a symbol is the atom x^1 over the core 1). It walks the expression
+// DAG once per distinct node (memoised by structural equality) and combines the children
+// without gcds:
 //   products add exponents (an atom divided by itself cancels: no polynomial is multiplied);
-//   a sum takes out the atoms' common power, min(e_k, f_k) per atom, and multiplies each core by
-//   the atom powers the other has more of: the sum of fractions over their least common
-//   denominator as a product of atoms, and of their common atom factors;
-//   a quotient makes the divisor's core an atom (a constant core is a number).
+//   a sum takes out the atoms' common power, min(e_k, f_k) per atom, multiplies each core by
+//   the atom powers the other has more of, and moves the new core's monomial content into the
+//   symbols' atoms: the sum of fractions over their least common denominator as a product of
+//   atoms, and of their common factors;
+//   a quotient makes the divisor's core an atom (a constant core is a number);
+//   a symbol registered by set_inverses (a motion's delta_b) is its polynomial's inverse.
 // RationalNormalizer(false) (rational_normal.h) multiplies whole denominators instead, so a
-// nested construction whose parts share divisors (a point built from points built from the same
-// lines) squares them at every level; here they are taken once.
+// nested construction whose parts share divisors (a point built from points built on the same
+// lines) squares them at every level; here they are taken once, and a rate over a rate with
+// the same delta_b loses it.
 //
 // Every step is an identity of rational functions and every atom is a non-zero polynomial, so
 // the expression is identically zero iff its core is the zero polynomial. What it cannot
