@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <map>
 #include <memory>
@@ -301,7 +302,12 @@ class TopologyProver {
       const MechanismInput& in = (*candidates_)[next_candidate_++];
       const std::string& link = scene_.linkage.link_names()[static_cast<size_t>(in.index)];
       const std::vector<InputValue<ex>> rates{{GiNaC::symbol("w_" + link + "_driver"), GiNaC::symbol("wd_" + link + "_driver")}};
-      auto m = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_, {in}, rates));
+      std::unique_ptr<SymbolicMotion> m;
+      try {
+        m = std::make_unique<SymbolicMotion>(solve_symbolically(scene_, config_, {in}, rates));
+      } catch (const std::exception&) {  // GiNaC's (a pole): this driver is of no use
+        continue;
+      }
       if (m->singular_everywhere || !m->note.empty() || vanishes_on_circles(m->det)) continue;
       routes_.push_back(std::move(m));
     }
@@ -380,7 +386,7 @@ class TopologyProver {
     // the scene's own unless another link splits the system further; past a size limit there,
     // in the next such driver's.
     for (size_t k = 0;; ++k) {
-      const SymbolicMotion& r = *route(k);
+      const SymbolicMotion& r = *route(k);  // k = 0 always has one; a later k is checked below
       const TopologyProof before = p;
       try {
         return decide_in(r, claim, p, deadline);
