@@ -397,11 +397,12 @@ class TopologyProver {
         p.verdict = ProofVerdict::Error;
         p.error = "undefined on every configuration of the topology: a division by an expression that is identically 0";
       } catch (const proof_detail::NormalizerOutOfTime& limit) {
-        const std::string why = fmt::format("no symbolic normal form within the budget ({})", limit.why);
+        const std::string why =
+            fmt::format("{}no symbolic normal form within the budget ({})",
+                        &r == &m ? "" : fmt::format("with link {} as the driver: ", driver_name(r)), limit.why);
         if (!limit.deadline && route(k + 1) != nullptr) {
           p = before;
-          p.argument.push_back(fmt::format("with link {} as the driver: {}; link {} drives next", driver_name(r), why,
-                                           driver_name(*route(k + 1))));
+          p.argument.push_back(fmt::format("{}; link {} drives next", why, driver_name(*route(k + 1))));
           continue;
         }
         identity_test(claim, p, m, why);
