@@ -55,7 +55,8 @@ class PackedNormalizer {
     std::vector<std::pair<int, int>> powers;  ///< (atom, exponent != 0), by atom
   };
   void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
-  /// What one product may cost before NormalizerOutOfTime (packed_polynomial.h).
+  /// What one product, and the normal form in all, may cost before NormalizerOutOfTime
+  /// (packed_polynomial.h).
   void set_limits(const PackedLimits& limits) { limits_ = limits; }
   /// Symbols that stand for 1 / polynomial (a motion's delta_b = 1 / det_b): each is read as
   /// its polynomial's inverse, so no core holds them. Before the first normal().
@@ -70,8 +71,6 @@ class PackedNormalizer {
   /// e as a fraction: the core times the atoms of positive exponent, over the others.
   PackedPolynomial numerator(const GiNaC::ex& e);
   PackedPolynomial denominator(const GiNaC::ex& e);
-  /// The atoms met so far (monic polynomials).
-  const std::vector<PackedPolynomial>& atoms() const { return atoms_; }
   /// The index of symbol s in this normalizer's polynomials (assigned on first use).
   int variable(const GiNaC::ex& s);
   /// a b under this normalizer's deadline and term limit.
@@ -101,8 +100,8 @@ class PackedNormalizer {
   NormalizerOutOfTime out_of_limits(const PackedTooLarge& t) const;
   std::unordered_map<GiNaC::ex, Factored, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> memo_;
   std::vector<PackedPolynomial> atoms_;
-  std::unordered_multimap<size_t, int> atom_index_;
-  std::vector<int> variable_atoms_;  // per variable: its atom, or -1  // hash of an atom's terms -> atom
+  std::unordered_multimap<size_t, int> atom_index_;  // hash of an atom's terms -> atom
+  std::vector<int> variable_atoms_;  // per variable: its atom, or -1
   std::map<std::pair<int, int>, PackedPolynomial> atom_powers_;  // (atom, k >= 2) -> atom^k
   std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> index_;
   std::vector<GiNaC::ex> symbols_;
