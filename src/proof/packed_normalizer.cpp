@@ -14,6 +14,23 @@ using GiNaC::ex;
 
 cln::cl_RA rational(const GiNaC::numeric& n) { return cln::the<cln::cl_RA>(n.to_cl_N()); }
 
+using Powers = std::vector<std::pair<int, int>>;
+
+// visit(atom, e, f) for every atom of a or b (both sorted by atom), in order, with its
+// exponent in each (0 where it is absent).
+template <class Visit>
+void for_each_atom(const Powers& a, const Powers& b, Visit visit) {
+  size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    const int atom_a = i < a.size() ? a[i].first : INT_MAX;
+    const int atom_b = j < b.size() ? b[j].first : INT_MAX;
+    const int atom = std::min(atom_a, atom_b);
+    const int e = atom_a == atom ? a[i++].second : 0;
+    const int f = atom_b == atom ? b[j++].second : 0;
+    visit(atom, e, f);
+  }
+}
+
 }  // namespace
 
 int PackedNormalizer::variable(const ex& s) {
@@ -124,28 +141,16 @@ PackedNormalizer::Factored PackedNormalizer::sum(const Factored& a, const Factor
   if (b.core.is_zero()) return a;
   if (a.core.is_zero()) return b;
   try {
-    if (a.powers == b.powers) {
-      Factored out{a.core + b.core, a.powers};
-      if (out.core.is_zero()) out.powers.clear();
-      return without_content(std::move(out));
-    }
-    // The common power of each atom, min(e, f) (an atom one side lacks has exponent 0 there),
-    // and each core times the powers the other side has more of.
+    // The common power of each atom, min(e, f), and each core times the powers the other side
+    // has more of (none when both have the same powers).
     Factored out;
     PackedPolynomial x = a.core, y = b.core;
-    size_t i = 0, j = 0;
-    while (i < a.powers.size() || j < b.powers.size()) {
-      const int atom_a = i < a.powers.size() ? a.powers[i].first : INT_MAX;
-      const int atom_b = j < b.powers.size() ? b.powers[j].first : INT_MAX;
-      const int atom = std::min(atom_a, atom_b);
-      const int e = atom_a == atom ? a.powers[i++].second : 0;
-      const int f = atom_b == atom ? b.powers[j++].second : 0;
+    for_each_atom(a.powers, b.powers, [&](int atom, int e, int f) {
       const int common = std::min(e, f);
       if (common != 0) out.powers.emplace_back(atom, common);
-          if (e > common) x = multiply(x, atom_power(atom, e - common));
+      if (e > common) x = multiply(x, atom_power(atom, e - common));
       if (f > common) y = multiply(y, atom_power(atom, f - common));
-      check_deadline();
-    }
+    });
     out.core = x + y;
     if (out.core.is_zero()) out.powers.clear();
     return without_content(std::move(out));
@@ -157,14 +162,9 @@ PackedNormalizer::Factored PackedNormalizer::sum(const Factored& a, const Factor
 PackedNormalizer::Factored PackedNormalizer::product(const Factored& a, const Factored& b) {
   if (a.core.is_zero() || b.core.is_zero()) return {};
   Factored out{multiply(a.core, b.core), {}};
-  size_t i = 0, j = 0;
-  while (i < a.powers.size() || j < b.powers.size()) {
-    const int atom_a = i < a.powers.size() ? a.powers[i].first : INT_MAX;
-    const int atom_b = j < b.powers.size() ? b.powers[j].first : INT_MAX;
-    const int atom = std::min(atom_a, atom_b);
-    const int e = (atom_a == atom ? a.powers[i++].second : 0) + (atom_b == atom ? b.powers[j++].second : 0);
-    if (e != 0) out.powers.emplace_back(atom, e);  // a divisor times itself cancels here
-  }
+  for_each_atom(a.powers, b.powers, [&out](int atom, int e, int f) {
+    if (e + f != 0) out.powers.emplace_back(atom, e + f);  // a divisor times itself cancels here
+  });
   return out;
 }
 
