@@ -7,6 +7,7 @@
 
 #include <tuple>
 
+#include "core/inline_rational.h"
 #include "core/multiprecision.h"
 #include "core/scalar.h"
 #include "linkproof/check/arithmetic.h"
@@ -14,7 +15,7 @@
 // X(enumerator, name, scalar type), in the enum's order: exact first, then the floating-point
 // arithmetics (which carry error bounds).
 #define LINKPROOF_FOR_EACH_ARITHMETIC(X) \
-  X(Exact, "exact", ::linkproof::Rational) \
+  X(Exact, "exact", ::linkproof::InlineRational) \
   LINKPROOF_FOR_EACH_FLOATING_ARITHMETIC(X)
 #define LINKPROOF_FOR_EACH_FLOATING_ARITHMETIC(X)                    \
   X(Double, "double", ::linkproof::Tracked<double>)                  \
@@ -53,7 +54,7 @@ decltype(auto) with_scalar_type(Arithmetic a, F&& f) {
     LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_ARITHMETIC_CASE)
 #undef LINKPROOF_ARITHMETIC_CASE
   }
-  return f.template operator()<Rational>();  // not reached: every enumerator has its case
+  return f.template operator()<ScalarTypeOf<Arithmetic::Exact>>();  // not reached: every enumerator has its case
 }
 
 }  // namespace linkproof

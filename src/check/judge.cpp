@@ -24,17 +24,18 @@ bool undefined_side(const Comparison<T>& c, ComparisonOutcome& out) {
   return false;
 }
 
-ComparisonOutcome judge_exact(const Comparison<Rational>& c) {
+template <class T>
+ComparisonOutcome judge_exact(const Comparison<T>& c) {
   ComparisonOutcome out;
   out.label = c.full_label();
   if (undefined_side(c, out)) return out;
-  const Rational& l = c.lhs.get();
-  const Rational& r = c.rhs.get();
-  const Rational res = l - r;
-  out.lhs = l;
-  out.rhs = r;
-  out.residual = res;
-  out.verdict = cln::zerop(res) ? Verdict::Holds : Verdict::Fails;
+  const T& l = c.lhs.get();
+  const T& r = c.rhs.get();
+  const T res = l - r;
+  out.lhs = result_number(l);
+  out.rhs = result_number(r);
+  out.residual = result_number(res);
+  out.verdict = is_zero(res) ? Verdict::Holds : Verdict::Fails;
   return out;
 }
 
@@ -187,7 +188,7 @@ template <class T>
 Verdict judge_verdict(const Comparison<T>& c) {
   if (!c.lhs.has_value() || !c.rhs.has_value()) return Verdict::Undefined;
   if constexpr (ScalarTraits<T>::is_exact) {
-    return cln::zerop(c.lhs.get() - c.rhs.get()) ? Verdict::Holds : Verdict::Fails;
+    return is_zero(c.lhs.get() - c.rhs.get()) ? Verdict::Holds : Verdict::Fails;
   } else {
     const auto& l = c.lhs.get();
     const auto& r = c.rhs.get();
@@ -210,6 +211,8 @@ std::string_view to_string(Side s) {
   template ComparisonOutcome judge<T>(const Comparison<T>&);        \
   template Verdict judge_verdict<T>(const Comparison<T>&);
 LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_INSTANTIATE_JUDGE)
+// The exact mechanism check (mechanism/mechanism_check.cpp) computes in CLN rationals.
+LINKPROOF_INSTANTIATE_JUDGE(Exact, "exact", ::linkproof::Rational)
 #undef LINKPROOF_INSTANTIATE_JUDGE
 
 }  // namespace linkproof

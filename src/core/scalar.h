@@ -4,6 +4,8 @@
 // uses only +, -, *, / and the functions below; ScalarTraits<T> supplies the rest.
 // Supported now:
 //   Rational          exact (CLN cl_RA): a residual is zero or it is not;
+//   InlineRational    the same values, held in two machine words while they fit
+//                     (inline_rational.h): the scalar of the exact arithmetic;
 //   double, long double  plain IEEE, for speed (no verdicts are drawn from these);
 //   Tracked<double>, Tracked<long double>, Tracked<MpFloat<D>>  with a running error bound
 //                     (see tracked.h), used for floating-point verdicts;
@@ -133,6 +135,8 @@ T from_int(long k) {
     if (-exact <= k && k <= exact) return static_cast<T>(k);
   } else if constexpr (is_tracked_ieee<T>) {
     if (-exact <= k && k <= exact) return T(static_cast<decltype(T{}.v)>(k), typename T::Radius{});
+  } else if constexpr (requires { ScalarTraits<T>::from_int64(k); }) {
+    return ScalarTraits<T>::from_int64(k);
   }
   return ScalarTraits<T>::from_rational(Rational(k));
 }
@@ -145,6 +149,7 @@ T from_fraction(long p, long d) {
     if (-exact < p && p < exact && 0 < d && d < exact)
       return tracked_from_small_fraction(static_cast<double>(p), static_cast<double>(d));
   }
+  if constexpr (requires { ScalarTraits<T>::from_fraction(p, d); }) return ScalarTraits<T>::from_fraction(p, d);
   if (d == 1) return from_int<T>(p);
   return ScalarTraits<T>::from_rational(Rational(p) / Rational(d));
 }

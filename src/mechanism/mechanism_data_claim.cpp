@@ -313,6 +313,8 @@ ClaimSides<T> evaluate_mechanism_claim(const MechanismDataClaim& claim, const Me
   template MechanismValueOf<type> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<type>&); \
   template ClaimSides<type> evaluate_mechanism_claim(const MechanismDataClaim&, const MechanismFrameOf<type>&);
 LINKPROOF_FOR_EACH_ARITHMETIC(LINKPROOF_INSTANTIATE_MECHANISM_CLAIM)
+// The exact mechanism check (MechanismFrame, mechanism_check.cpp) computes in CLN rationals.
+LINKPROOF_INSTANTIATE_MECHANISM_CLAIM(Exact, "exact", ::linkproof::Rational)
 template struct MechanismFrameOf<GiNaC::ex>;
 template MechanismValueOf<GiNaC::ex> evaluate_mechanism_expression(const Node&, const MechanismFrameOf<GiNaC::ex>&);
 #undef LINKPROOF_INSTANTIATE_MECHANISM_CLAIM

@@ -7,6 +7,7 @@
 #include "check/random_polygon.h"
 #include "core/time_budget.h"
 #include "linkproof/io/scene.h"
+#include "check/arithmetic_types.h"
 #include "check/check_polygon.h"
 
 namespace linkproof {
@@ -77,7 +78,8 @@ std::vector<std::pair<Polygon<Rational>, InputRates<Rational>>> smaller(const Po
 
 ClaimOutcome check_data_claim(GroundTruthEngine& engine, const DataClaim& claim, const Polygon<Rational>& polygon,
                               const InputRates<Rational>& rates) {
-  const PolygonContext<Rational> ctx = build_polygon_context<Rational>(engine, polygon, rates);
+  using Exact = ScalarTypeOf<Arithmetic::Exact>;
+  const PolygonContext<Exact> ctx = build_polygon_context<Exact>(engine, polygon, rates);
   return run_claim(to_claim(claim), ctx);
 }
 

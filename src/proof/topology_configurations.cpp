@@ -70,9 +70,10 @@ std::optional<MechanismSolution<Rational>> solve(const MechanismScene& s) {
 }
 
 // Fails / Holds / Undefined of one claim on one solved configuration (no evidence kept).
-Verdict quick_verdict(const MechanismDataClaim& claim, const MechanismFrame& frame, std::string* quantity,
+template <class T>
+Verdict quick_verdict(const MechanismDataClaim& claim, const MechanismFrameOf<T>& frame, std::string* quantity,
                       std::string* reason) {
-  const ClaimSides<Rational> sides = evaluate_mechanism_claim(claim, frame);
+  const ClaimSides<T> sides = evaluate_mechanism_claim(claim, frame);
   Verdict v = Verdict::Holds;
   for (const auto& c : sides.instances) {
     if (!c.lhs.has_value() || !c.rhs.has_value()) {

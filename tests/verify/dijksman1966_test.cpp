@@ -154,7 +154,7 @@ void expect_wrong_variants_rejected(const char* arith) {
 }
 
 TEST(Dijksman1966MustFail, WrongFormulasAreRejectedInExactArithmetic) {
-  expect_wrong_variants_rejected<Rational>("exact");
+  expect_wrong_variants_rejected<ScalarTypeOf<Arithmetic::Exact>>("exact");
 }
 
 TEST(Dijksman1966MustFail, WrongFormulasAreRejectedInDouble) {

@@ -1,0 +1,70 @@
+// The exact arithmetic computes in InlineRational (core/inline_rational.h). Its values must be
+// CLN's to the last digit: every claim of the catalogue, evaluated on random polygons of both
+// scalar types through the same generic code (engine, construction, four-bars, claims), gives
+// the same sides, comparison by comparison, defined or undefined alike.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+
+#include "dijksman1966.h"
+#include "check/random_polygon.h"
+#include "claims/data_claim.h"
+#include "claims/polygon_context.h"
+#include "core/inline_rational.h"
+
+namespace linkproof {
+namespace {
+
+template <class A, class B>
+void expect_same_side(const Defined<A>& a, const Defined<B>& b, const std::string& where) {
+  ASSERT_EQ(a.has_value(), b.has_value()) << where;
+  if (a.has_value()) {
+    ASSERT_EQ(to_exact(a.get()), to_exact(b.get())) << where;
+  } else {
+    ASSERT_EQ(a.quantity(), b.quantity()) << where;
+  }
+}
+
+template <class A, class B>
+int expect_same_comparisons(const std::vector<Comparison<A>>& a, const std::vector<Comparison<B>>& b,
+                            const std::string& where) {
+  EXPECT_EQ(a.size(), b.size()) << where;
+  for (size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
+    const std::string at = where + " " + b[k].full_label();
+    EXPECT_EQ(a[k].full_label(), b[k].full_label()) << at;
+    expect_same_side(a[k].lhs, b[k].lhs, at + " lhs");
+    expect_same_side(a[k].rhs, b[k].rhs, at + " rhs");
+  }
+  return static_cast<int>(a.size());
+}
+
+TEST(ExactRoutes, InlineAndCLNRationalsGiveEveryClaimTheSameSidesOnRandomPolygons) {
+  constexpr std::uint64_t kSeed = 20261128;
+  std::printf("ExactRoutes seed %llu (replay: generate_random_polygon(seed, n, index))\n",
+              static_cast<unsigned long long>(kSeed));
+  GroundTruthEngine engine;
+  int comparisons = 0, polygons = 0;
+  for (int n = 4; n <= 9; ++n) {
+    for (int index = 0; index < 50; ++index) {
+      const RandomPolygonCase c = generate_random_polygon(kSeed, n, index);
+      const auto reference = build_polygon_context<Rational>(engine, c.polygon, c.rates);
+      const auto inline_ctx = build_polygon_context<InlineRational>(engine, c.polygon, c.rates);
+      ++polygons;
+      for (const DataClaim& claim : dijksman1966::claim_file().claims) {
+        if (!claim.info.applies_to(n)) continue;
+        const std::string where = claim.info.id + " n=" + std::to_string(n) + " index=" + std::to_string(index);
+        const ClaimSides<Rational> a = evaluate_data_claim(claim, reference);
+        const ClaimSides<InlineRational> b = evaluate_data_claim(claim, inline_ctx);
+        comparisons += expect_same_comparisons(a.instances, b.instances, where);
+        comparisons += expect_same_comparisons(a.terms, b.terms, where);
+        if (HasFatalFailure()) return;
+      }
+    }
+  }
+  std::printf("%d polygons, %d comparisons\n", polygons, comparisons);
+  EXPECT_GE(comparisons, 10000);
+}
+
+}  // namespace
+}  // namespace linkproof
