@@ -17,7 +17,7 @@ bool fits_word(const cln::cl_I& x) {
 Rational InlineRational::word_rational() const {
   const cln::cl_I n(static_cast<long>(num_));
   if (den_ == 1) return n;
-  // Already reduced: CLN's quotient checks that with one gcd of two words.
+  // CLN's quotient reduces it.
   return n / cln::cl_I(static_cast<long>(den_));
 }
 

@@ -1,25 +1,29 @@
 // The exact arithmetic's scalar: a rational number held in two machine words while it fits, and
 // as a CLN rational (cl_RA) only when it does not.
 //
-// Why: a CLN rational that is not an integer is a heap object, and every operation on it
-// normalises by a gcd through CLN's generic dispatch. An exact pentagon check spent a third of
-// its time in cln::gcd and a sixth in malloc and free (perf, 2026-11-28), on numbers that almost
-// all fit in 64 bits. Here the word path is inline: sums and products form their numerator and
-// denominator in 128 bits (Knuth's reduced sum and cross-cancelled product, TAOCP 4.5.1, so the
-// gcds are of the small operands), and only a result that does not fit in 64 bits goes to CLN.
+// Why: a CLN rational that is not an integer is a heap object, and every CLN operation
+// normalises its result by a gcd. An exact pentagon check spent a third of its time in cln::gcd
+// and a sixth in malloc and free (perf, 2026-11-28), on numbers that almost all fit in 64 bits.
+// Here the word path is inline and needs no gcd while its results fit: a sum or product forms
+// numerator and denominator exactly in 128 bits (each part of an operand is below 2^63) and
+// keeps them as they are when both fit in words. Only a result that does not fit is reduced
+// (one binary gcd of the 128-bit parts), and only one whose reduced form still does not fit
+// goes to CLN. A value is reduced for good when it is read as a cl_RA (printing, evidence).
 //
-// Every value is kept reduced with a positive denominator, and in the word form exactly when
-// it fits (|numerator| <= 2^63 - 1, denominator <= 2^63 - 1): the representation is canonical,
-// so equality compares words, and every value, its text and every verdict are those of cl_RA
+// Invariant: a value is in the word form exactly when its reduced form fits (|numerator| and
+// denominator <= 2^63 - 1), not necessarily reduced, with a positive denominator; 0 is 0/1.
+// So a word and a CLN value are never equal, two words compare by cross-multiplication in 128
+// bits, and zero is a zero numerator. Every value, its text and every verdict are those of cl_RA
 // (InlineRationalOps.* compares them operation by operation on random operands of every size,
-// ExactRoutes.* whole checks). Division by zero throws what cl_RA throws.
+// ExactRoutes.* every claim on random polygons). Division by zero throws what cl_RA throws.
 #pragma once
 
 #include <cln/rational.h>
 
+#include <bit>
 #include <compare>
 #include <cstdint>
-#include <numeric>
+#include <utility>
 #include <string>
 
 #include "linkproof/core/exact.h"
@@ -47,7 +51,7 @@ class InlineRational {
   /// q, in the word form when it fits.
   explicit InlineRational(const Rational& q) { assign(q); }
 
-  /// The value as a CLN rational (its numerator and denominator reduced, as cl_RA keeps them).
+  /// The value as a CLN rational (reduced, as cl_RA keeps every value).
   Rational to_rational() const { return is_word() ? word_rational() : big_; }
   bool is_zero() const { return is_word() && num_ == 0; }
   /// True while numerator and denominator are held in words (for tests and benchmarks).
@@ -73,7 +77,7 @@ class InlineRational {
   friend InlineRational operator/(const InlineRational& a, const InlineRational& b) {
     InlineRational r;
     if (a.is_word() && b.is_word() && b.num_ != 0) {
-      // a / b = a * (1 / b): the reciprocal of a reduced word fraction is one, sign moved up.
+      // a / b = a * (1 / b), the reciprocal's sign moved to its numerator.
       const std::int64_t rn = b.num_ > 0 ? b.den_ : -b.den_;
       const std::int64_t rd = b.num_ > 0 ? b.num_ : -b.num_;
       if (r.word_product(a.num_, a.den_, rn, rd)) return r;
@@ -94,10 +98,11 @@ class InlineRational {
   InlineRational& operator*=(const InlineRational& b) { return *this = *this * b; }
   InlineRational& operator/=(const InlineRational& b) { return *this = *this / b; }
 
-  /// Canonical form: equal values have equal representations.
+  /// A value is in words exactly when its reduced form fits, so a word and a CLN value differ.
   friend bool operator==(const InlineRational& a, const InlineRational& b) {
     if (a.is_word() != b.is_word()) return false;
-    return a.is_word() ? a.num_ == b.num_ && a.den_ == b.den_ : a.big_ == b.big_;
+    if (!a.is_word()) return a.big_ == b.big_;
+    return static_cast<Int128>(a.num_) * b.den_ == static_cast<Int128>(b.num_) * a.den_;
   }
   friend std::strong_ordering operator<=>(const InlineRational& a, const InlineRational& b) {
     if (a.is_word() && b.is_word()) {
@@ -117,8 +122,7 @@ class InlineRational {
   Rational word_rational() const;
   void assign(const Rational& q);
 
-  /// Stores the reduced n/d (d > 0; 0 as 0/1) if both fit in words; false leaves *this
-  /// unspecified.
+  /// Stores n/d (d > 0; 0 as 0/1) if both parts fit in words; false leaves *this unspecified.
   bool store(Int128 n, Int128 d) {
     if (n == 0) d = 1;
     if (n < -static_cast<Int128>(kMax) || n > kMax || d > kMax) return false;
@@ -126,54 +130,55 @@ class InlineRational {
     den_ = static_cast<std::int64_t>(d);
     return true;
   }
-  static std::uint64_t magnitude(std::int64_t x) { return x < 0 ? -static_cast<std::uint64_t>(x) : static_cast<std::uint64_t>(x); }
+  /// Stores n/d (d > 0) in words if its reduced form fits: as it is when it fits, else reduced.
+  /// False when even the reduced form needs more than words.
+  bool store_reduced(Int128 n, Int128 d) {
+    if (store(n, d)) return true;
+    const Int128 g = static_cast<Int128>(gcd(n < 0 ? -static_cast<UInt128>(n) : static_cast<UInt128>(n), static_cast<UInt128>(d)));
+    return store(n / g, d / g);
+  }
 
-  /// a +- b of two word values (Knuth's reduced sum). False when the result needs more than words.
+  /// a +- b of two word values. False when the result needs more than words.
   bool word_sum(const InlineRational& a, const InlineRational& b, bool subtract) {
     const Int128 bn = subtract ? -static_cast<Int128>(b.num_) : static_cast<Int128>(b.num_);
-    if (a.den_ == b.den_) {
-      // Common denominator d: (an +- bn) / d, reduced by gcd(sum, d) (1 when d = 1).
-      const Int128 s = a.num_ + bn;
-      if (a.den_ == 1) return store(s, 1);
-      const std::uint64_t g = gcd_128_64(s, static_cast<std::uint64_t>(a.den_));
-      return store(s / static_cast<Int128>(g), a.den_ / static_cast<std::int64_t>(g));
-    }
-    const std::uint64_t g = std::gcd(static_cast<std::uint64_t>(a.den_), static_cast<std::uint64_t>(b.den_));
-    if (g == 1) {
-      // Coprime denominators: an d + bn b over b d is already reduced; its parts fit in 128 bits.
-      const Int128 n = static_cast<Int128>(a.num_) * b.den_ + bn * a.den_;
-      const Int128 d = static_cast<Int128>(a.den_) * b.den_;
-      return store(n, d);
-    }
-    const std::int64_t ad = a.den_ / static_cast<std::int64_t>(g), bd = b.den_ / static_cast<std::int64_t>(g);
-    const Int128 t = static_cast<Int128>(a.num_) * bd + bn * ad;  // |t| < 2^127
-    const std::uint64_t g2 = gcd_128_64(t, g);
-    const Int128 d = static_cast<Int128>(ad) * (b.den_ / static_cast<std::int64_t>(g2));
-    return store(t / static_cast<Int128>(g2), d);
+    if (a.den_ == b.den_) return store_reduced(a.num_ + bn, a.den_);
+    // |an bd +- bn ad| < 2^127 and ad bd < 2^126: exact in 128 bits.
+    return store_reduced(static_cast<Int128>(a.num_) * b.den_ + bn * a.den_, static_cast<Int128>(a.den_) * b.den_);
   }
 
-  /// (an/ad)(bn/bd) of reduced fractions with positive denominators: cross-cancelled first, so
-  /// the product is reduced. False when it needs more than words.
+  /// (an/ad)(bn/bd) with ad, bd > 0: |an bn| < 2^126, exact in 128 bits. False when the result
+  /// needs more than words.
   bool word_product(std::int64_t an, std::int64_t ad, std::int64_t bn, std::int64_t bd) {
-    if (an == 0 || bn == 0) {
-      num_ = 0;
-      den_ = 1;
-      return true;
-    }
-    const std::int64_t g1 = static_cast<std::int64_t>(std::gcd(magnitude(an), static_cast<std::uint64_t>(bd)));
-    const std::int64_t g2 = static_cast<std::int64_t>(std::gcd(magnitude(bn), static_cast<std::uint64_t>(ad)));
-    return store(static_cast<Int128>(an / g1) * (bn / g2), static_cast<Int128>(ad / g2) * (bd / g1));
+    return store_reduced(static_cast<Int128>(an) * bn, static_cast<Int128>(ad) * bd);
   }
 
-  /// gcd(|t|, g) for g >= 1: one 128-bit remainder brings t below g, then word gcds.
-  static std::uint64_t gcd_128_64(Int128 t, std::uint64_t g) {
-    const UInt128 m = t < 0 ? -static_cast<UInt128>(t) : static_cast<UInt128>(t);
-    const std::uint64_t r = m >> 64 == 0 ? static_cast<std::uint64_t>(m) % g : static_cast<std::uint64_t>(m % g);
-    return std::gcd(r, g);
+  static int trailing_zeros(std::uint64_t x) { return std::countr_zero(x); }
+  static int trailing_zeros(UInt128 x) {
+    const auto low = static_cast<std::uint64_t>(x);
+    return low != 0 ? std::countr_zero(low) : 64 + std::countr_zero(static_cast<std::uint64_t>(x >> 64));
+  }
+  /// gcd(u, v) for v >= 1: in word operations when both fit in 64 bits.
+  static UInt128 gcd(UInt128 u, UInt128 v) {
+    if (u >> 64 == 0 && v >> 64 == 0) return binary_gcd(static_cast<std::uint64_t>(u), static_cast<std::uint64_t>(v));
+    return binary_gcd(u, v);
+  }
+  /// Stein's binary gcd (shifts and subtractions, no divisions), for v >= 1.
+  template <class U>
+  static U binary_gcd(U u, U v) {
+    if (u == 1 || v == 1) return 1;
+    if (u == 0) return v;
+    const int shift = trailing_zeros(u | v);
+    u >>= trailing_zeros(u);
+    do {
+      v >>= trailing_zeros(v);
+      if (u > v) std::swap(u, v);
+      v -= u;
+    } while (v != 0);
+    return u << shift;
   }
 
-  // Word form when den_ > 0 (num_ / den_ reduced, num_ != INT64_MIN); else big_ holds the value,
-  // which then does not fit in words.
+  // Word form when den_ > 0 (num_ / den_, not necessarily reduced, |num_| <= 2^63 - 1); else
+  // big_ holds the value, whose reduced form then does not fit in words.
   std::int64_t num_ = 0;
   std::int64_t den_ = 1;
   Rational big_;
