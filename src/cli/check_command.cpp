@@ -104,7 +104,7 @@ void add_check_command(CLI::App& app, Action& action) {
   auto& a = bind_action<CheckArgs>(c, action, run_check);
   c->add_option("scene", a.scene, "scene file, e.g. verify/scenes/pentagon.yaml")->required();
   c->add_option("--arith", a.arith,
-                "arithmetic: exact (default: CLN rationals, a residual is 0 or not), or floating point with a "
+                "arithmetic: exact (default: rationals, in machine words while they fit and CLN past them; a residual is 0 or not), or floating point with a "
                 "running error bound that draws the tolerance: double, long-double, mp30, mp50, mp100, mp1000 "
                 "(CLN long floats of 128, 192, 384, 3392 bits); default: the scene's `ask: [arithmetic: ...]`, else exact");
   c->add_flag("--json", a.json, "print JSON (the contract: docs/check.md, docs/mechanisms.md)");

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "support/cli_run.h"
+#include "support/topology_claims.h"
 #include "support/counterexample_replay.h"
 
 namespace linkproof {
@@ -17,8 +18,6 @@ namespace {
 
 using test::CliRun;
 using test::run_cli;
-
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
 struct Pair {
   std::string claims, scene;
@@ -36,7 +35,7 @@ const std::vector<Pair>& pairs() {
 
 TEST(MechanismClaimCli, TrueClaimsHoldOnTheirSceneAndWrongOnesFailUnlessTrueThere) {
   for (const Pair& p : pairs()) {
-    const CliRun r = run_cli({"check-claim", source(p.claims), "--scene", source(p.scene), "--json"});
+    const CliRun r = run_cli({"check-claim", test::source_path(p.claims), "--scene", test::source_path(p.scene), "--json"});
     EXPECT_EQ(r.code, 0) << p.claims << "\n" << r.out << r.err;
     const auto j = nlohmann::json::parse(r.out);
     for (const auto& c : j["claims"]) {
@@ -48,7 +47,7 @@ TEST(MechanismClaimCli, TrueClaimsHoldOnTheirSceneAndWrongOnesFailUnlessTrueTher
       else
         EXPECT_EQ(c["verdict"], "holds") << id << ": true at the scene's configuration only";
     }
-    const CliRun text = run_cli({"check-claim", source(p.claims), "--scene", source(p.scene)});
+    const CliRun text = run_cli({"check-claim", test::source_path(p.claims), "--scene", test::source_path(p.scene)});
     EXPECT_EQ(text.code, 0) << text.out << text.err;
   }
 }
@@ -56,7 +55,7 @@ TEST(MechanismClaimCli, TrueClaimsHoldOnTheirSceneAndWrongOnesFailUnlessTrueTher
 TEST(MechanismClaimCli, TopologyHoldsOnSamplesOrDisprovesWithAReplayableCounterexample) {
   for (const Pair& p : pairs()) {
     std::cout << p.claims << ": seed 5, count 10\n";
-    const CliRun r = run_cli({"check-claim", source(p.claims), "--topology", source(p.scene), "--count", "10",
+    const CliRun r = run_cli({"check-claim", test::source_path(p.claims), "--topology", test::source_path(p.scene), "--count", "10",
                               "--seed", "5", "--json"});
     ASSERT_EQ(r.code, 0) << p.claims << "\n" << r.out.substr(0, 4000) << r.err;
     const auto j = nlohmann::json::parse(r.out);
@@ -73,14 +72,14 @@ TEST(MechanismClaimCli, TopologyHoldsOnSamplesOrDisprovesWithAReplayableCountere
         continue;
       }
       ASSERT_EQ(c["verdict"], "disproved") << id;
-      test::expect_counterexample_refails(source(p.claims), id, c["counterexample"]["scene_yaml"], "cx_");
+      test::expect_counterexample_refails(test::source_path(p.claims), id, c["counterexample"]["scene_yaml"], "cx_");
     }
   }
 }
 
 TEST(MechanismClaimCli, TopologyTextSaysWhatTheVerdictRestsOn) {
   const Pair& p = pairs()[1];
-  const CliRun r = run_cli({"check-claim", source(p.claims), "--topology", source(p.scene), "--count", "5"});
+  const CliRun r = run_cli({"check-claim", test::source_path(p.claims), "--topology", test::source_path(p.scene), "--count", "5"});
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("NOT a proof"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("holds_on_samples"), std::string::npos) << r.out;
@@ -97,7 +96,7 @@ std::string claim_file(const std::string& name, const std::string& lhs, const st
 }
 
 TEST(MechanismClaimCli, ATrueClaimThatFailsIsExitOneAndUndefinedIsNamed) {
-  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const std::string scene = test::source_path("verify/scenes/mechanisms/seed001_fourbar.yaml");
   const CliRun wrong = run_cli({"check-claim", claim_file("m1.yaml", "alpha(\"3\")", "1"), "--scene", scene, "--json"});
   EXPECT_EQ(wrong.code, 1) << wrong.out << wrong.err;
   const CliRun undef =

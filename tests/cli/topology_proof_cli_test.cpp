@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "support/cli_run.h"
+#include "support/topology_claims.h"
 #include "support/counterexample_replay.h"
 
 namespace linkproof {
@@ -18,20 +19,18 @@ namespace {
 using test::CliRun;
 using test::run_cli;
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
-
-struct Pair {
+struct ClaimsAndScene {
   std::string claims, scene;
 };
 
 TEST(TopologyProofCli, TrueClaimsAreProvedAndWrongOnesDisprovedWithReplayableCounterexamples) {
-  const std::vector<Pair> pairs = {
+  const std::vector<ClaimsAndScene> pairs = {
       {"verify/claims/mechanisms/fourbar.yaml", "verify/scenes/mechanisms/seed001_fourbar.yaml"},
       {"verify/claims/mechanisms/fourbar_acceleration_polygon.yaml", "verify/scenes/mechanisms/seed001_fourbar.yaml"},
       {"verify/claims/mechanisms/inverted_slider_crank.yaml", "verify/scenes/mechanisms/inverted_slider_crank.yaml"},
       {"verify/claims/mechanisms/slider_crank.yaml", "verify/scenes/mechanisms/dimensions_slider_crank.yaml"}};
-  for (const Pair& p : pairs) {
-    const CliRun r = run_cli({"prove", "--file", source(p.claims), "--topology", source(p.scene), "--json"});
+  for (const ClaimsAndScene& p : pairs) {
+    const CliRun r = run_cli({"prove", "--file", test::source_path(p.claims), "--topology", test::source_path(p.scene), "--json"});
     ASSERT_EQ(r.code, 0) << p.claims << "\n" << r.out.substr(0, 4000) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["mode"], "topology_proof");
@@ -43,7 +42,7 @@ TEST(TopologyProofCli, TrueClaimsAreProvedAndWrongOnesDisprovedWithReplayableCou
         continue;
       }
       ASSERT_EQ(c["verdict"], "disproved") << id;
-      test::expect_counterexample_refails(source(p.claims), id, c["counterexample"]["scene_yaml"], "tp_");
+      test::expect_counterexample_refails(test::source_path(p.claims), id, c["counterexample"]["scene_yaml"], "tp_");
     }
   }
 }
@@ -64,7 +63,7 @@ TEST(TopologyProofCli, ThePapersErrataOnTheEightLinkTopologiesAreDisprovedWithRe
       {"verify/claims/mechanisms/dijksman1984_eightbar.yaml", "verify/scenes/mechanisms/dijksman1984_eightbar.yaml",
        {"section3.P60.printed", "eq5p.printed"}}};
   for (const Case& k : cases) {
-    std::vector<std::string> args = {"prove", "--file", source(k.claims), "--topology", source(k.scene), "--json"};
+    std::vector<std::string> args = {"prove", "--file", test::source_path(k.claims), "--topology", test::source_path(k.scene), "--json"};
     for (const std::string& id : k.ids) args.insert(args.end(), {"--claim", id});
     const CliRun r = run_cli(args);
     ASSERT_EQ(r.code, 0) << k.claims << "\n" << r.out.substr(0, 4000) << r.err;
@@ -77,14 +76,14 @@ TEST(TopologyProofCli, ThePapersErrataOnTheEightLinkTopologiesAreDisprovedWithRe
         continue;
       }
       ASSERT_EQ(c["verdict"], "disproved") << id;
-      test::expect_counterexample_refails(source(k.claims), id, c["counterexample"]["scene_yaml"], "papers_");
+      test::expect_counterexample_refails(test::source_path(k.claims), id, c["counterexample"]["scene_yaml"], "papers_");
     }
   }
 }
 
 TEST(TopologyProofCli, AProofNamesItsExceptionalSetInTextAndJson) {
-  const std::string claims = source("verify/claims/mechanisms/fourbar.yaml");
-  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const std::string claims = test::source_path("verify/claims/mechanisms/fourbar.yaml");
+  const std::string scene = test::source_path("verify/scenes/mechanisms/seed001_fourbar.yaml");
   const CliRun r = run_cli({"prove", "--file", claims, "--topology", scene, "--claim", "coupler_pole", "--json"});
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -102,8 +101,8 @@ TEST(TopologyProofCli, AProofNamesItsExceptionalSetInTextAndJson) {
 }
 
 TEST(TopologyProofCli, CheckClaimOnATopologyProvesUnlessACountIsGiven) {
-  const std::string claims = source("verify/claims/mechanisms/fourbar.yaml");
-  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const std::string claims = test::source_path("verify/claims/mechanisms/fourbar.yaml");
+  const std::string scene = test::source_path("verify/scenes/mechanisms/seed001_fourbar.yaml");
   const CliRun proof = run_cli({"check-claim", claims, "--topology", scene, "--json"});
   ASSERT_EQ(proof.code, 0) << proof.err;
   EXPECT_EQ(nlohmann::json::parse(proof.out)["mode"], "topology_proof");
@@ -113,8 +112,8 @@ TEST(TopologyProofCli, CheckClaimOnATopologyProvesUnlessACountIsGiven) {
 }
 
 TEST(TopologyProofCli, WithoutTimeForAProofTheIdentityTestIsNotAProofUnderStrict) {
-  const std::string claims = source("verify/claims/mechanisms/fourbar.yaml");
-  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const std::string claims = test::source_path("verify/claims/mechanisms/fourbar.yaml");
+  const std::string scene = test::source_path("verify/scenes/mechanisms/seed001_fourbar.yaml");
   const std::vector<std::string> args = {"prove", "--file", claims, "--topology", scene, "--claim", "alpha3_closed_form",
                                          "--proof-seconds", "0", "--json"};
   const CliRun r = run_cli(args);
@@ -128,16 +127,16 @@ TEST(TopologyProofCli, WithoutTimeForAProofTheIdentityTestIsNotAProofUnderStrict
 }
 
 TEST(TopologyProofCli, ProveOnATopologyRefusesMissingOrPolygonOptions) {
-  const std::string scene = source("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  const std::string scene = test::source_path("verify/scenes/mechanisms/seed001_fourbar.yaml");
   const CliRun no_file = run_cli({"prove", "--topology", scene});
   EXPECT_EQ(no_file.code, 2);
   EXPECT_NE(no_file.err.find("--topology"), std::string::npos) << no_file.err;
   const CliRun with_n =
-      run_cli({"prove", "--file", source("verify/claims/mechanisms/fourbar.yaml"), "--topology", scene, "--n", "5"});
+      run_cli({"prove", "--file", test::source_path("verify/claims/mechanisms/fourbar.yaml"), "--topology", scene, "--n", "5"});
   EXPECT_EQ(with_n.code, 2);
   EXPECT_NE(with_n.err.find("--n"), std::string::npos) << with_n.err;
   const CliRun unknown = run_cli(
-      {"prove", "--file", source("verify/claims/mechanisms/fourbar.yaml"), "--topology", scene, "--claim", "nope"});
+      {"prove", "--file", test::source_path("verify/claims/mechanisms/fourbar.yaml"), "--topology", scene, "--claim", "nope"});
   EXPECT_EQ(unknown.code, 2);
   EXPECT_NE(unknown.err.find("nope"), std::string::npos) << unknown.err;
 }

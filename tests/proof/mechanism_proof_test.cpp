@@ -12,25 +12,20 @@
 #include "io/claim_file.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
+#include "support/topology_claims.h"
 
 namespace linkproof {
 namespace {
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
-MechanismScene scene(const std::string& rel) { return load_mechanism_scene(source(rel)); }
-
-std::vector<MechanismDataClaim> bound(MechanismClaimFile f, const MechanismScene& s) {
-  for (MechanismDataClaim& c : f.claims) bind_mechanism_claim(c, s);
-  return f.claims;
-}
+MechanismScene scene(const std::string& rel) { return load_mechanism_scene(test::source_path(rel)); }
 
 std::vector<MechanismDataClaim> claims_in(const std::string& rel, const MechanismScene& s) {
-  return bound(load_mechanism_claim_file(source(rel)), s);
+  return test::bind_all(load_mechanism_claim_file(test::source_path(rel)), s);
 }
 
 std::vector<MechanismDataClaim> claims_from(const std::string& yaml, const MechanismScene& s) {
-  return bound(parse_mechanism_claim_file(yaml, "test.yaml"), s);
+  return test::bind_all(parse_mechanism_claim_file(yaml, "test.yaml"), s);
 }
 
 const TopologyProof& find(const TopologyProofRun& run, const std::string& id) {

@@ -14,6 +14,7 @@
 #include "io/claim_file.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
+#include "support/topology_claims.h"
 #include "proof/mechanism_proof.h"
 #include "proof/symbolic_motion.h"
 #include "core/symbolic_scalar.h"
@@ -23,15 +24,9 @@
 namespace linkproof {
 namespace {
 
-std::string source(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
 
 const char* kClass3 = "verify/scenes/mechanisms/seed003_class3.yaml";
 const char* kKoshelClaims = "verify/claims/mechanisms/koshel_class3.yaml";
-
-std::vector<MechanismDataClaim> bound(MechanismClaimFile f, const MechanismScene& s) {
-  for (MechanismDataClaim& c : f.claims) bind_mechanism_claim(c, s);
-  return f.claims;
-}
 
 std::vector<MechanismDataClaim> only(std::vector<MechanismDataClaim> claims, const std::string& id) {
   std::erase_if(claims, [&](const MechanismDataClaim& c) { return c.info.id != id; });
@@ -39,7 +34,7 @@ std::vector<MechanismDataClaim> only(std::vector<MechanismDataClaim> claims, con
 }
 
 std::string koshel_lhs(const std::string& id) {
-  const YAML::Node file = YAML::LoadFile(source(kKoshelClaims));
+  const YAML::Node file = YAML::LoadFile(test::source_path(kKoshelClaims));
   for (const YAML::Node& c : file["claims"])
     if ("koshel." + c["id"].as<std::string>() == id) {
       std::string lhs = c["lhs"].as<std::string>();
@@ -74,13 +69,13 @@ std::vector<GiNaC::ex> omegas_and_alphas_at(const MechanismScene& s, const Symbo
 }
 
 TEST(ProofDriver, AMechanismOfDyadsBehindItsCrankKeepsItsOwnDriver) {
-  const MechanismScene s = load_mechanism_scene(source("verify/scenes/mechanisms/seed001_fourbar.yaml"));
+  const MechanismScene s = load_mechanism_scene(test::source_path("verify/scenes/mechanisms/seed001_fourbar.yaml"));
   EXPECT_EQ(group_sizes(s, s.inputs), (std::vector<int>{2, 1}));
   EXPECT_TRUE(better_proof_drivers(s).empty());
 }
 
 TEST(ProofDriver, KoshelsClassThreeMechanismSplitsIntoDyadsWhenLinkThreeDrives) {
-  const MechanismScene s = load_mechanism_scene(source(kClass3));
+  const MechanismScene s = load_mechanism_scene(test::source_path(kClass3));
   EXPECT_EQ(group_sizes(s, s.inputs), (std::vector<int>{4, 2, 1, 1, 1}));
   const std::vector<MechanismInput> better = better_proof_drivers(s);
   ASSERT_FALSE(better.empty());
@@ -92,7 +87,7 @@ TEST(ProofDriver, BothDriversSolvedByGroupsGiveTheSceneExactMotion) {
   // The symbolic rates of the class-III mechanism, at the bundled scene's coordinates, against
   // the exact solve of that scene: with the crank driving at the scene's rates, and with link 3
   // driving at its own rates in that motion (the fact a proof with another driver rests on).
-  const MechanismScene s = load_mechanism_scene(source(kClass3));
+  const MechanismScene s = load_mechanism_scene(test::source_path(kClass3));
   const MechanismSolution<Rational> exact = solve_mechanism<Rational>(
       s.linkage, s.inputs, rigid_body_constraint_matrix<Rational>(s.linkage),
       [&](const std::vector<Rational>& qd) { return rigid_body_acceleration_rhs<Rational>(s.linkage, qd); }, s.source);
@@ -112,9 +107,9 @@ TEST(ProofDriver, BothDriversSolvedByGroupsGiveTheSceneExactMotion) {
 }
 
 TEST(ProofDriver, KoshelsDyadPlanForEpsilonThreeIsProvedWithTheScenesDeadCentresAsItsExceptions) {
-  const MechanismScene s = load_mechanism_scene(source(kClass3));
+  const MechanismScene s = load_mechanism_scene(test::source_path(kClass3));
   const std::vector<MechanismDataClaim> claims =
-      only(bound(load_mechanism_claim_file(source(kKoshelClaims)), s), "koshel.driver5.epsilon3");
+      only(test::bind_all(load_mechanism_claim_file(test::source_path(kKoshelClaims)), s), "koshel.driver5.epsilon3");
   ASSERT_EQ(claims.size(), 1u);
   const TopologyProofRun run = prove_topology(s, claims, {});
   const TopologyProof& p = run.claims.front();
@@ -143,10 +138,10 @@ TEST(ProofDriver, KoshelsDyadPlanForEpsilonThreeIsProvedWithTheScenesDeadCentres
 TEST(ProofDriver, ADivisorWithARateIsNamedInTheScenesOwnRates) {
   // The dyad plan's claim multiplied and divided by omega(1): with link 3 driving, omega(1) is a
   // solved rate; the exception must be the scene's own w_1 = 0.
-  const MechanismScene s = load_mechanism_scene(source(kClass3));
+  const MechanismScene s = load_mechanism_scene(test::source_path(kClass3));
   const std::string yaml = "claims:\n  - id: plan_over_omega1\n    source: test\n    statement: test\n    lhs: >\n      (" +
                            koshel_lhs("koshel.driver5.epsilon3") + ")*omega(\"1\")/omega(\"1\")\n    rhs: alpha(\"3\")\n";
-  const TopologyProofRun run = prove_topology(s, bound(parse_mechanism_claim_file(yaml, "test.yaml"), s), {});
+  const TopologyProofRun run = prove_topology(s, test::bind_all(parse_mechanism_claim_file(yaml, "test.yaml"), s), {});
   const TopologyProof& p = run.claims.front();
   ASSERT_EQ(p.verdict, ProofVerdict::ProvedGenerically) << to_string(p.verdict) << ": " << p.error << "\n" << fmt::format("{}", fmt::join(p.argument, "\n"));
   EXPECT_EQ(run.proof_driver, "3");

@@ -1,5 +1,5 @@
-// Helpers of the topology-proof tests: a claim file's chosen claims bound to a mechanism scene,
-// and whether a proof names a dead centre among its exceptions.
+// Helpers of the topology-proof tests: paths in the source tree, a claim file's claims bound to a
+// mechanism scene, and whether a proof names a dead centre among its exceptions.
 #pragma once
 
 #include <algorithm>
@@ -11,6 +11,15 @@
 #include "proof/mechanism_proof.h"
 
 namespace linkproof::test {
+
+/// A path inside the source tree.
+inline std::string source_path(const std::string& rel) { return std::string(LINKPROOF_SOURCE_DIR) + "/" + rel; }
+
+/// Every claim of `f`, bound to `s`.
+inline std::vector<MechanismDataClaim> bind_all(MechanismClaimFile f, const MechanismScene& s) {
+  for (MechanismDataClaim& c : f.claims) bind_mechanism_claim(c, s);
+  return f.claims;
+}
 
 /// The claims of `claims_file` whose id is in `ids`, in the file's order, bound to `scene`.
 inline std::vector<MechanismDataClaim> bound_claims(const MechanismScene& scene, const std::string& claims_file,
