@@ -162,17 +162,22 @@ class InlineRational {
     if (u >> 64 == 0 && v >> 64 == 0) return binary_gcd(static_cast<std::uint64_t>(u), static_cast<std::uint64_t>(v));
     return binary_gcd(u, v);
   }
-  /// Stein's binary gcd (shifts and subtractions, no divisions), for v >= 1.
+  /// Stein's binary gcd (shifts and subtractions, no divisions).
   template <class U>
   static U binary_gcd(U u, U v) {
     if (u == 1 || v == 1) return 1;
     if (u == 0) return v;
+    if (v == 0) return u;
     const int shift = trailing_zeros(u | v);
     u >>= trailing_zeros(u);
     do {
       v >>= trailing_zeros(v);
       if (u > v) std::swap(u, v);
       v -= u;
+      // Both below 2^64 (the 128-bit loop shrinks them): finish in word operations.
+      if constexpr (sizeof(U) > sizeof(std::uint64_t)) {
+        if ((u | v) >> 64 == 0) return static_cast<U>(binary_gcd(static_cast<std::uint64_t>(u), static_cast<std::uint64_t>(v))) << shift;
+      }
     } while (v != 0);
     return u << shift;
   }
