@@ -52,7 +52,8 @@ inline std::string families(const std::vector<RandomPolygonCase>& cases) {
   for (const char* f : {"scattered", "star", "convex"}) {
     for (const RandomPolygonCase& c : cases) {
       if (c.family != f) continue;
-      out += (out.empty() ? "" : "+") + std::string(f);
+      if (!out.empty()) out += '+';
+      out += f;
       break;
     }
   }

@@ -4,6 +4,7 @@
 
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linkproof/mechanism/mechanism_scene.h"
@@ -20,7 +21,9 @@ inline MechanismScene random_chain(int links, unsigned seed) {
   for (int l = 0; l < links; ++l) names.push_back(std::to_string(l));
   std::vector<LinkageJoint> joints;
   const auto add = [&](int a, int b) {
-    joints.push_back({"J" + std::to_string(joints.size()), JointType::Revolute, {a, b}, point(), {}});
+    std::string name = "J";  // appended, not "J" + string: GCC 12 warns falsely on that (-Wstringop-overflow)
+    name += std::to_string(joints.size());
+    joints.push_back({std::move(name), JointType::Revolute, {a, b}, point(), {}});
   };
   add(0, 1), add(1, 2), add(2, 3), add(3, 0);
   for (int p = 4; p + 1 < links; p += 2) {

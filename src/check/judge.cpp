@@ -32,10 +32,13 @@ ComparisonOutcome judge_exact(const Comparison<T>& c) {
   const T& l = c.lhs.get();
   const T& r = c.rhs.get();
   const T res = l - r;
+  const bool holds = is_zero(res);
   out.lhs = result_number(l);
-  out.rhs = result_number(r);
+  // Equal exact values have one reduced form: a side that holds is read once (reading a
+  // value as a cl_RA reduces it, a gcd).
+  out.rhs = holds ? *out.lhs : result_number(r);
   out.residual = result_number(res);
-  out.verdict = is_zero(res) ? Verdict::Holds : Verdict::Fails;
+  out.verdict = holds ? Verdict::Holds : Verdict::Fails;
   return out;
 }
 

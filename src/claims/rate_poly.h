@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "linkproof/core/error.h"
+#include "core/exact_sum.h"
 #include "core/scalar.h"
 #include "core/stable_radix_sort.h"
 
@@ -161,18 +162,45 @@ class RatePoly {
   }
 
   /// The value at the given rates (omega[j-1], omega_dot[j-1]).
+  /// Exact types add the terms in a balanced tree (core/exact_sum.h), others in order.
   T evaluate(const std::vector<T>& omega, const std::vector<T>& omega_dot) const {
-    T sum = from_int<T>(0);
-    for (const auto& [m, c] : terms()) {
-      T t = c;
+    const auto value = [&](const Term& term) {
+      T t = term.second;
+      const Monomial& m = term.first;
       for (int i = 0; i < m.size(); ++i) {
         const RateVariable v = RateVariable::from_id(m[i]);
         const auto k = static_cast<size_t>(v.index - 1);
         t = t * (v.kind == RateVariable::Omega ? omega.at(k) : omega_dot.at(k));
       }
-      sum = sum + t;
+      return t;
+    };
+    if constexpr (GrowingExactNumber<T>) {
+      std::vector<T> values;
+      values.reserve(terms().size());
+      for (const Term& term : terms()) values.push_back(value(term));
+      return balanced_sum(std::move(values));
+    } else {
+      T sum = from_int<T>(0);
+      for (const Term& term : terms()) sum = sum + value(term);
+      return sum;
     }
-    return sum;
+  }
+
+  /// Whether a and b are the same polynomial: the same coefficient for every monomial, a term
+  /// with a zero coefficient counting as absent (a side may keep the terms that cancelled).
+  /// Exact types only: for a floating-point T, equal midpoints are no statement about values.
+  friend bool same_polynomial(const RatePoly& a, const RatePoly& b)
+    requires ScalarTraits<T>::is_exact
+  {
+    const auto &at = a.terms(), &bt = b.terms();
+    size_t i = 0, k = 0;
+    while (true) {
+      while (i < at.size() && linkproof::is_zero(at[i].second)) ++i;
+      while (k < bt.size() && linkproof::is_zero(bt[k].second)) ++k;
+      if (i == at.size() || k == bt.size()) return i == at.size() && k == bt.size();
+      if (!(at[i].first == bt[k].first) || !(at[i].second == bt[k].second)) return false;
+      ++i, ++k;
+    }
   }
 
   /// In place: O(terms of b), whatever the size of *this (the terms are sorted once, when read).

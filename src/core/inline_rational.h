@@ -54,33 +54,36 @@ class InlineRational {
   /// The value as a CLN rational (reduced, as cl_RA keeps every value).
   Rational to_rational() const { return is_word() ? word_rational() : big_; }
   bool is_zero() const { return is_word() && num_ == 0; }
+  bool is_one() const { return is_word() && num_ == den_; }
   /// True while numerator and denominator are held in words (for tests and benchmarks).
   bool is_word() const { return den_ != 0; }
   int sign() const { return is_word() ? (num_ > 0) - (num_ < 0) : cln::minusp(big_) ? -1 : cln::zerop(big_) ? 0 : 1; }
 
   friend InlineRational operator+(const InlineRational& a, const InlineRational& b) {
-    InlineRational r;
-    if (a.is_word() && b.is_word() && r.word_sum(a, b, false)) return r;
+    if (a.is_word() && b.is_word()) return word_sum(a, b, false);
+    if (a.is_zero()) return b;
+    if (b.is_zero()) return a;
     return InlineRational(a.to_rational() + b.to_rational());
   }
   friend InlineRational operator-(const InlineRational& a, const InlineRational& b) {
-    InlineRational r;
-    if (a.is_word() && b.is_word() && r.word_sum(a, b, true)) return r;
+    if (a.is_word() && b.is_word()) return word_sum(a, b, true);
+    if (b.is_zero()) return a;
     return InlineRational(a.to_rational() - b.to_rational());
   }
   friend InlineRational operator*(const InlineRational& a, const InlineRational& b) {
-    InlineRational r;
-    if (a.is_word() && b.is_word() && r.word_product(a.num_, a.den_, b.num_, b.den_)) return r;
+    if (a.is_word() && b.is_word()) return word_product(a.num_, a.den_, b.num_, b.den_);
+    // A CLN value times 1 (rate polynomials multiply every coefficient by its rates' 1s): itself.
+    if (a.is_one()) return b;
+    if (b.is_one()) return a;
     return InlineRational(a.to_rational() * b.to_rational());
   }
   /// a / b; b = 0 throws what cl_RA's division throws.
   friend InlineRational operator/(const InlineRational& a, const InlineRational& b) {
-    InlineRational r;
     if (a.is_word() && b.is_word() && b.num_ != 0) {
       // a / b = a * (1 / b), the reciprocal's sign moved to its numerator.
       const std::int64_t rn = b.num_ > 0 ? b.den_ : -b.den_;
       const std::int64_t rd = b.num_ > 0 ? b.num_ : -b.num_;
-      if (r.word_product(a.num_, a.den_, rn, rd)) return r;
+      return word_product(a.num_, a.den_, rn, rd);
     }
     return InlineRational(a.to_rational() / b.to_rational());
   }
@@ -121,6 +124,9 @@ class InlineRational {
 
   Rational word_rational() const;
   void assign(const Rational& q);
+  /// n/d for coprime n and d > 0 that do not both fit in words: the CLN value, built from the
+  /// reduced parts (the operands need not be read as cl_RA, nor the operation redone in CLN).
+  static InlineRational big_from_reduced(Int128 n, Int128 d);
 
   /// Stores n/d (d > 0; 0 as 0/1) if both parts fit in words; false leaves *this unspecified.
   bool store(Int128 n, Int128 d) {
@@ -130,26 +136,27 @@ class InlineRational {
     den_ = static_cast<std::int64_t>(d);
     return true;
   }
-  /// Stores n/d (d > 0) in words if its reduced form fits: as it is when it fits, else reduced.
-  /// False when even the reduced form needs more than words.
-  bool store_reduced(Int128 n, Int128 d) {
-    if (store(n, d)) return true;
+  /// n/d (d > 0): in words if its reduced form fits (as it is when it fits, else reduced),
+  /// else the CLN value of the reduced form.
+  static InlineRational reduced(Int128 n, Int128 d) {
+    InlineRational r;
+    if (r.store(n, d)) return r;
     const Int128 g = static_cast<Int128>(gcd(n < 0 ? -static_cast<UInt128>(n) : static_cast<UInt128>(n), static_cast<UInt128>(d)));
-    return store(n / g, d / g);
+    if (r.store(n / g, d / g)) return r;
+    return big_from_reduced(n / g, d / g);
   }
 
-  /// a +- b of two word values. False when the result needs more than words.
-  bool word_sum(const InlineRational& a, const InlineRational& b, bool subtract) {
+  /// a +- b of two word values.
+  static InlineRational word_sum(const InlineRational& a, const InlineRational& b, bool subtract) {
     const Int128 bn = subtract ? -static_cast<Int128>(b.num_) : static_cast<Int128>(b.num_);
-    if (a.den_ == b.den_) return store_reduced(a.num_ + bn, a.den_);
+    if (a.den_ == b.den_) return reduced(a.num_ + bn, a.den_);
     // |an bd +- bn ad| < 2^127 and ad bd < 2^126: exact in 128 bits.
-    return store_reduced(static_cast<Int128>(a.num_) * b.den_ + bn * a.den_, static_cast<Int128>(a.den_) * b.den_);
+    return reduced(static_cast<Int128>(a.num_) * b.den_ + bn * a.den_, static_cast<Int128>(a.den_) * b.den_);
   }
 
-  /// (an/ad)(bn/bd) with ad, bd > 0: |an bn| < 2^126, exact in 128 bits. False when the result
-  /// needs more than words.
-  bool word_product(std::int64_t an, std::int64_t ad, std::int64_t bn, std::int64_t bd) {
-    return store_reduced(static_cast<Int128>(an) * bn, static_cast<Int128>(ad) * bd);
+  /// (an/ad)(bn/bd) with ad, bd > 0: |an bn| < 2^126, exact in 128 bits.
+  static InlineRational word_product(std::int64_t an, std::int64_t ad, std::int64_t bn, std::int64_t bd) {
+    return reduced(static_cast<Int128>(an) * bn, static_cast<Int128>(ad) * bd);
   }
 
   static int trailing_zeros(std::uint64_t x) { return std::countr_zero(x); }

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "dijksman1966.h"
 #include "check/random_polygon.h"
@@ -64,6 +66,64 @@ TEST(ExactRoutes, InlineAndCLNRationalsGiveEveryClaimTheSameSidesOnRandomPolygon
   }
   std::printf("%d polygons, %d comparisons\n", polygons, comparisons);
   EXPECT_GE(comparisons, 10000);
+}
+
+// An exact claim computes a total once when both sides are the same polynomial (data_claim.h).
+// Every total must still be its own side's value at the rates: checked here against the side's
+// terms summed one by one in CLN rationals, on claims that hold and on the wrong variants of
+// the catalogue, whose sides differ.
+TEST(ExactRoutes, EveryTotalIsItsOwnSidesValueAtTheRates) {
+  constexpr std::uint64_t kSeed = 20261129;
+  std::printf("ExactRoutes totals seed %llu\n", static_cast<unsigned long long>(kSeed));
+  GroundTruthEngine engine;
+  int totals = 0, differing = 0;
+  for (int n = 4; n <= 8; ++n) {
+    for (int index = 0; index < 6; ++index) {
+      const RandomPolygonCase c = generate_random_polygon(kSeed, n, index);
+      const auto ctx = build_polygon_context<InlineRational>(engine, c.polygon, c.rates);
+      for (const DataClaim& claim : dijksman1966::claim_file().claims) {
+        if (!claim.info.applies_to(n)) continue;
+        const ClaimSides<InlineRational> sides = evaluate_data_claim(claim, ctx);
+        for (size_t k = 0; k < sides.instances.size(); ++k) {
+          const int j = claim.for_each_j ? static_cast<int>(k) + 1 : 0;
+          const std::string where = claim.info.id + " n=" + std::to_string(n) + " index=" + std::to_string(index) +
+                                    " " + sides.instances[k].full_label();
+          const Comparison<InlineRational>& total = sides.instances[k];
+          std::optional<Rational> values[2];
+          int side = 0;
+          for (const ClaimExpression* e : {&claim.lhs, &claim.rhs}) {
+            const SideValue<InlineRational> v = evaluate_side(claim, *e, ctx, j);
+            if (v.poly.has_value() && v.undefined_inputs.empty()) {
+              Rational sum = 0;
+              for (const auto& [m, coefficient] : v.poly.get().terms()) {
+                Rational t = coefficient.to_rational();
+                for (int i = 0; i < m.size(); ++i) {
+                  const RateVariable r = RateVariable::from_id(m[i]);
+                  const auto at = static_cast<size_t>(r.index - 1);
+                  t = t * (r.kind == RateVariable::Omega ? c.rates.omega[at] : c.rates.omega_dot[at]);
+                }
+                sum = sum + t;
+              }
+              values[side] = sum;
+            }
+            ++side;
+          }
+          for (int s = 0; s < 2; ++s) {
+            const Defined<InlineRational>& got = s == 0 ? total.lhs : total.rhs;
+            ASSERT_EQ(got.has_value(), values[s].has_value()) << where << (s == 0 ? " lhs" : " rhs");
+            if (got.has_value()) {
+              ASSERT_EQ(got.get().to_rational(), *values[s]) << where << (s == 0 ? " lhs" : " rhs");
+            }
+          }
+          ++totals;
+          if (values[0] && values[1] && *values[0] != *values[1]) ++differing;
+        }
+      }
+    }
+  }
+  std::printf("%d totals, %d with sides of different values\n", totals, differing);
+  EXPECT_GE(totals, 1000);
+  EXPECT_GE(differing, 100);  // the wrong variants: totals whose sides differ were checked too
 }
 
 }  // namespace

@@ -201,5 +201,33 @@ TEST(RatePolyTerms, ConstantDivisionAndEvaluationInExactArithmetic) {
   EXPECT_THROW((void)(p / RatePoly<Q>(Q(0))), UndefinedQuantity);
 }
 
+TEST(RatePolySame, SamePolynomialIgnoresZeroTermsAndComparesEveryOtherCoefficient) {
+  using R = Rational;
+  const Monomial w1{RateVariable{1, RateVariable::Omega}.id()};
+  const Monomial w1w2{RateVariable{1, RateVariable::Omega}.id(), RateVariable{2, RateVariable::Omega}.id()};
+  const Monomial wd2{RateVariable{2, RateVariable::OmegaDot}.id()};
+  RatePoly<R> a, b;
+  a.add(w1, R(3));
+  a.add(w1w2, R(0));  // cancelled on one side only
+  a.add(wd2, R(1) / 7);
+  b.add(wd2, R(2) / 14);
+  b.add(w1, R(3));
+  EXPECT_TRUE(same_polynomial(a, b));
+  EXPECT_TRUE(same_polynomial(b, a));
+  RatePoly<R> c = b;
+  c.add(w1w2, R(1) / 1000000);  // one more nonzero term
+  EXPECT_FALSE(same_polynomial(a, c));
+  EXPECT_FALSE(same_polynomial(c, a));
+  RatePoly<R> d;
+  d.add(w1, R(3));
+  d.add(wd2, R(1) / 8);  // one coefficient differs
+  EXPECT_FALSE(same_polynomial(a, d));
+  RatePoly<R> zero, zeros;
+  zeros.add(w1, R(0));
+  zeros.add(Monomial{}, R(0));
+  EXPECT_TRUE(same_polynomial(zero, zeros));
+  EXPECT_FALSE(same_polynomial(zero, a));
+}
+
 }  // namespace
 }  // namespace linkproof

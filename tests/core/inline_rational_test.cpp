@@ -100,6 +100,28 @@ TEST(InlineRationalOps, TheWordFormEndsExactlyAtTheWordLimits) {
   EXPECT_EQ(InlineRational(Rational(1) / 4) - InlineRational(Rational(1) / 4), InlineRational(std::int64_t{0}));
 }
 
+// A word result that does not fit even reduced becomes a CLN value built from its reduced
+// 128-bit parts: it must be CLN's own canonical value (an integer where the denominator is 1,
+// a reduced ratio otherwise), or cl_RA's equality and text would differ from CLN's.
+TEST(InlineRationalOps, ResultsPastTheWordsAreCLNsCanonicalValues) {
+  const Rational two64 = cln::expt_pos(cln::cl_I(2), 64);
+  const InlineRational product = InlineRational(std::int64_t{1} << 62) * InlineRational(std::int64_t{4});
+  ASSERT_FALSE(product.is_word());
+  EXPECT_TRUE(cln::equal(product.to_rational(), two64));
+  EXPECT_EQ(cln::denominator(product.to_rational()), 1);
+  // (2^62 / 3) * (6 / 5) = 2^63 / 5: reduced by the 128-bit gcd, numerator past the words.
+  const InlineRational q = InlineRational(Rational(std::int64_t{1} << 62) / 3) * InlineRational(Rational(6) / 5);
+  ASSERT_FALSE(q.is_word());
+  EXPECT_TRUE(cln::equal(q.to_rational(), Rational(cln::expt_pos(cln::cl_I(2), 63)) / 5));
+  EXPECT_EQ(cln::denominator(q.to_rational()), 5);
+  // A sum past the words, with a denominator: (2^63 - 1)/7 + 1/7 = 2^63 / 7.
+  const Rational max(cln::cl_I(static_cast<long>(kMax)));
+  const InlineRational s = InlineRational(max / 7) + InlineRational(Rational(1) / 7);
+  ASSERT_FALSE(s.is_word());
+  EXPECT_TRUE(cln::equal(s.to_rational(), (max + 1) / 7));
+  EXPECT_EQ(s.to_rational() - (max + 1) / 7, 0);
+}
+
 TEST(InlineRationalOps, DivisionByZeroThrowsWhatCLNThrows) {
   EXPECT_THROW(Rational(1) / Rational(0), cln::division_by_0_exception);
   EXPECT_THROW(InlineRational(std::int64_t{1}) / InlineRational(), cln::division_by_0_exception);
