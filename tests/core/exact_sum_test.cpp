@@ -16,24 +16,24 @@
 namespace linkproof {
 namespace {
 
-constexpr std::uint64_t kSeed = 20261128;
+constexpr std::uint64_t kBalancedSumSeed = 20261128;
 
 // A rational with its own denominator (up to ~40 bits), so that partial sums grow.
-Rational draw(std::mt19937_64& g) {
+Rational draw_with_own_denominator(std::mt19937_64& g) {
   const auto num = static_cast<long>(g() % 2000001) - 1000000;
   const auto den = static_cast<long>(g() % (1L << 40)) + 1;
   return Rational(num) / Rational(den);
 }
 
 TEST(BalancedSum, GivesTheSequentialSumForEveryLengthInBothExactTypes) {
-  std::printf("BalancedSum seed %llu\n", static_cast<unsigned long long>(kSeed));
-  std::mt19937_64 g(kSeed);
+  std::printf("BalancedSum seed %llu\n", static_cast<unsigned long long>(kBalancedSumSeed));
+  std::mt19937_64 g(kBalancedSumSeed);
   for (int length = 0; length <= 70; ++length) {
     std::vector<Rational> q;
     std::vector<InlineRational> w;
     Rational sequential = 0;
     for (int k = 0; k < length; ++k) {
-      q.push_back(draw(g));
+      q.push_back(draw_with_own_denominator(g));
       w.emplace_back(q.back());
       sequential = sequential + q.back();
     }
@@ -43,13 +43,13 @@ TEST(BalancedSum, GivesTheSequentialSumForEveryLengthInBothExactTypes) {
 }
 
 TEST(BalancedSum, ExactRatePolynomialValueIsTheSumOfItsTermsAtTheRates) {
-  std::mt19937_64 g(kSeed + 1);
+  std::mt19937_64 g(kBalancedSumSeed + 1);
   constexpr int kInputs = 40;
   std::vector<InlineRational> omega, omega_dot;
   std::vector<Rational> omega_q, omega_dot_q;
   for (int j = 0; j < kInputs; ++j) {
-    omega_q.push_back(draw(g));
-    omega_dot_q.push_back(draw(g));
+    omega_q.push_back(draw_with_own_denominator(g));
+    omega_dot_q.push_back(draw_with_own_denominator(g));
     omega.emplace_back(omega_q.back());
     omega_dot.emplace_back(omega_dot_q.back());
   }
@@ -59,16 +59,16 @@ TEST(BalancedSum, ExactRatePolynomialValueIsTheSumOfItsTermsAtTheRates) {
   // 861 terms, each rate with its own denominator.
   RatePoly<InlineRational> p;
   Rational expected = 0;
-  const Rational c0 = draw(g);
+  const Rational c0 = draw_with_own_denominator(g);
   p.add(Monomial{}, InlineRational(c0));
   expected = expected + c0;
   for (int j = 1; j <= kInputs; ++j) {
     for (int l = j; l <= kInputs; ++l) {
-      const Rational c = draw(g);
+      const Rational c = draw_with_own_denominator(g);
       p.add(Monomial{w(j), w(l)}, InlineRational(c));
       expected = expected + c * omega_q[j - 1] * omega_q[l - 1];
     }
-    const Rational c = draw(g);
+    const Rational c = draw_with_own_denominator(g);
     p.add(Monomial{wd(j)}, InlineRational(c));
     expected = expected + c * omega_dot_q[j - 1];
   }
