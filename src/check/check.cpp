@@ -17,15 +17,16 @@ bool ClaimOutcome::is_as_expected() const {
 }
 
 namespace {
-/// Adds the quantity that made each undecided floating-point comparison inconclusive (one
-/// re-evaluation of the claim, only when something is undecided).
+/// Adds the quantity that made each undecided floating-point comparison inconclusive, among
+/// what the claim read (`reads`).
 template <class T>
-void name_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context, ClaimOutcome& out) {
+void name_inconclusive_cause(const PolygonContext<T>& context, const typename PolygonContext<T>::Reads& reads,
+                             ClaimOutcome& out) {
   std::optional<InconclusiveCause> cause;
   for (auto* group : {&out.instances, &out.terms})
     for (ComparisonOutcome& c : *group) {
       if (c.verdict != Verdict::Inconclusive || !c.floating || c.floating->undecided == Undecided::None) continue;
-      if (!cause) cause = find_inconclusive_cause(claim, context);
+      if (!cause) cause = find_inconclusive_cause(context, reads);
       c.cause = cause;
     }
 }
@@ -36,7 +37,9 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
   ClaimOutcome out;
   out.info = claim.info;
   try {
+    context.clear_reads();
     const ClaimSides<T> sides = claim.function<T>()(context);
+    const typename PolygonContext<T>::Reads reads = context.reads();
     if (sides.instances.empty()) {
       out.verdict = Verdict::Error;
       out.error = "the claim produced no comparison";
@@ -58,7 +61,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
       out.headline = judge(*headline);
       if constexpr (!ScalarTraits<T>::is_exact) {
         out.instances.push_back(out.headline);
-        name_inconclusive_cause(claim, context, out);
+        name_inconclusive_cause(context, reads, out);
         out.headline = std::move(out.instances.front());
         out.instances.clear();
       }
@@ -74,7 +77,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
       v = combine(v, out.terms.back().verdict);
     }
     out.verdict = v;
-    if constexpr (!ScalarTraits<T>::is_exact) name_inconclusive_cause(claim, context, out);
+    if constexpr (!ScalarTraits<T>::is_exact) name_inconclusive_cause(context, reads, out);
     out.headline = out.instances.front();
     for (const auto& group : {&out.instances, &out.terms}) {
       bool found = false;

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <new>
 #include <type_traits>
 
 namespace linkproof {
@@ -79,23 +78,15 @@ struct Search {
 }  // namespace
 
 template <class T>
-InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context) {
+InconclusiveCause find_inconclusive_cause(const PolygonContext<T>& context, const typename PolygonContext<T>::Reads& reads) {
   using F = decltype(T::v);
   using Kind = InconclusiveCause::Kind;
-  const PolygonContext<T> fresh = context.fresh();
-  try {
-    (void)claim.function<T>()(fresh);
-  } catch (const std::bad_alloc&) {
-    throw;  // out of memory (--max-memory-mb) ends the run: not an evaluation's error
-  } catch (const std::exception&) {
-    // What was computed before the exception is still recorded; that is all we need.
-  }
   Search<F> s;
-  const int n = fresh.n;
-  const auto& constructions = fresh.computed_constructions();
-  if (fresh.has_truth() || fresh.has_closed_forms() || fresh.has_four_bar_truth() || !constructions.empty())
-    s.visit(cross(fresh.polygon.side(n - 2), fresh.polygon.side(n - 1)), "D = r_{n-2} x r_{n-1}", Kind::DeadCentre);
-  for (const auto& [reading, four_bars] : constructions) {
+  const int n = context.n;
+  if (reads.truth || reads.closed_forms || reads.four_bar_truth || reads.readings != 0)
+    s.visit(cross(context.polygon.side(n - 2), context.polygon.side(n - 1)), "D = r_{n-2} x r_{n-1}", Kind::DeadCentre);
+  for (const auto& [reading, four_bars] : context.computed_constructions()) {
+    if ((reads.readings >> reading & 1u) == 0) continue;  // computed for another claim
     const std::string tag = reading == 0 ? "" : fmt::format(" under reading {}", reading);
     for (size_t k = 0; k < four_bars.size(); ++k) {
       const auto& c = four_bars[k];
@@ -116,7 +107,7 @@ InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonConte
 
 // Every floating-point arithmetic (exact comparisons are never inconclusive).
 #define LINKPROOF_INSTANTIATE_CAUSE(enumerator, name, T) \
-  template InconclusiveCause find_inconclusive_cause<T>(const Claim&, const PolygonContext<T>&);
+  template InconclusiveCause find_inconclusive_cause<T>(const PolygonContext<T>&, const PolygonContext<T>::Reads&);
 LINKPROOF_FOR_EACH_FLOATING_ARITHMETIC(LINKPROOF_INSTANTIATE_CAUSE)
 #undef LINKPROOF_INSTANTIATE_CAUSE
 

@@ -3,9 +3,10 @@
 //
 // A comparison is inconclusive when a side's bound is unbounded (a divisor's bound reached its
 // magnitude) or too wide (check/judge.h). The judge names the side (the one whose bound is the
-// wider relative to its magnitude). This file names the quantity: the claim is evaluated again
-// on a fresh context (claims/polygon_context.h), so that what is computed afterwards is exactly
-// what this claim reads, and the quantities read are searched in dependency order:
+// wider relative to its magnitude). This file names the quantity: the context records what the
+// claim read while it was evaluated (PolygonContext::reads, claims/polygon_context.h: the claims
+// of a check share one context, and a quantity another claim computed is not this claim's
+// cause), and the quantities read are searched in dependency order:
 //   1. D = r_{n-2} x r_{n-1}, which the engine, the closed forms, the four-bar truths and the
 //      construction all divide by (near the dead centre every route loses, docs/conventions.md §A6);
 //   2. the construction of each four-bar j it reads: Q_j, P'_j, i_{n-1,j}, i_{n-2,j},
@@ -24,9 +25,9 @@
 
 namespace linkproof {
 
-/// Evaluates `claim` again on context.fresh() and searches what it read (see the file comment).
-/// T is one of the Tracked arithmetics of ClaimScalarTypes.
+/// Searches what one claim read (`reads`, recorded by the context while the claim was evaluated
+/// on it: see the file comment). T is one of the Tracked arithmetics of ClaimScalarTypes.
 template <class T>
-InconclusiveCause find_inconclusive_cause(const Claim& claim, const PolygonContext<T>& context);
+InconclusiveCause find_inconclusive_cause(const PolygonContext<T>& context, const typename PolygonContext<T>::Reads& reads);
 
 }  // namespace linkproof

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <utility>
@@ -58,20 +59,24 @@ class PolygonContext {
 
   /// The engine's exact motion of the polygon.
   const Defined<PolygonMotion<T>>& truth() const {
+    reads_.truth = true;
     return cached(truth_, [&] { return engine_->motion(polygon, rates); });
   }
   /// The closed forms of docs/conventions.md §A3.
   const Defined<ClosedForms<T>>& closed() const {
+    reads_.closed_forms = true;
     return cached(closed_, [&] { return compute_closed_forms(polygon); });
   }
   /// Exact term coefficients of omega-dot_{n-1,n} (first) and omega-dot_{n-2,n} (second).
   const Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>& coefficients() const {
+    reads_.truth = true;
     solve_terms();
     return *coefficients_;
   }
   /// Coefficients of omega_j in the exact omega_{n-1,n} (first) and omega_{n-2,n} (second),
   /// j = 1..n-3 at [j-1].
   const Defined<std::pair<std::vector<T>, std::vector<T>>>& velocity_coefficients() const {
+    reads_.truth = true;
     solve_terms();
     return *velocity_coefficients_;
   }
@@ -79,6 +84,7 @@ class PolygonContext {
   /// default is the correct reading).
   const std::vector<FourBarConstruction<T>>& construction_for(const ConstructionReading& r = {}) const {
     const int key = r.displaced_start | r.beta_towards_p_prime << 1 | r.beta_ccw_positive << 2 | r.signed_ratios << 3;
+    reads_.readings |= static_cast<std::uint16_t>(1u << key);
     auto it = constructions_.find(key);
     if (it == constructions_.end()) {
       std::vector<FourBarConstruction<T>> v;
@@ -89,6 +95,7 @@ class PolygonContext {
   }
   /// Four-bar j (1 <= j <= n-3) solved on its own by the engine.
   const FourBarTruth<T>& four_bar(int j) const {
+    reads_.four_bar_truth = true;
     std::optional<FourBarTruth<T>>& slot = four_bars_[static_cast<size_t>(j - 1)];
     if (!slot) slot = solve_four_bar(j);
     return *slot;
@@ -100,10 +107,6 @@ class PolygonContext {
   const T& omega_dot_in(int j) const { return rates.omega_dot[static_cast<size_t>(j - 1)]; }
   int inputs() const { return n - 3; }
 
-  /// A context on the same polygon, rates and engine with nothing computed yet: evaluating one
-  /// claim on it and then asking what was computed tells which quantities that claim reads
-  /// (check/inconclusive_cause.h names the one that made a comparison inconclusive).
-  PolygonContext fresh() const { return PolygonContext(*engine_, polygon, rates, dead_centre_); }
   /// What has been computed so far, without computing anything.
   bool has_truth() const { return truth_.has_value() || velocity_coefficients_.has_value() || coefficients_.has_value(); }
   bool has_closed_forms() const { return closed_.has_value(); }
@@ -112,6 +115,19 @@ class PolygonContext {
   }
   /// The constructions computed so far, by reading.
   const std::map<int, std::vector<FourBarConstruction<T>>>& computed_constructions() const { return constructions_; }
+
+  /// What was read since the last clear_reads(), whether computed then or before: which
+  /// quantities one claim reads on a context that other claims share (check/inconclusive_cause.h
+  /// names among them the one that made a comparison inconclusive). Reading a quantity records it,
+  /// also when its computation ends in an exception.
+  struct Reads {
+    bool truth = false;           ///< the engine's motion or its term coefficients
+    bool closed_forms = false;
+    bool four_bar_truth = false;  ///< some four-bar j solved on its own
+    std::uint16_t readings = 0;   ///< bit k: the construction under reading k (construction_for's key)
+  };
+  const Reads& reads() const { return reads_; }
+  void clear_reads() const { reads_ = Reads{}; }
 
  private:
   /// f() unless at the dead centre, as a Defined (an UndefinedQuantity becomes undefined).
@@ -170,6 +186,7 @@ class PolygonContext {
   mutable std::optional<Defined<std::pair<std::vector<T>, std::vector<T>>>> velocity_coefficients_;
   mutable std::map<int, std::vector<FourBarConstruction<T>>> constructions_;
   mutable std::vector<std::optional<FourBarTruth<T>>> four_bars_;
+  mutable Reads reads_;
 };
 
 /// Builds the context from a polygon and rates already in scalar type T (see the constructor).

@@ -3,6 +3,11 @@
 // what to trust instead.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
 #include "dijksman1966.h"
 #include "check/check_polygon.h"
 #include "report/comparison_text.h"
@@ -171,6 +176,59 @@ TEST(TrustRoute, NearQAtInfinityItNamesAQuantityOfTheConstruction) {
     }
   }
   EXPECT_GT(construction, 0);
+}
+
+// The claims of a check share one context, and a quantity is named as a cause only if the
+// claim itself read it (PolygonContext::reads). Checked against each claim checked alone, on a
+// context of its own: every inconclusive comparison names the same cause, on every extreme
+// family in double and long double (the catalogue's claims read different quantities: the
+// engine, the closed forms, the construction under several readings, the four-bars alone).
+TEST(TrustRoute, EachClaimNamesTheCauseItNamesWhenCheckedAlone) {
+  GroundTruthEngine engine;
+  const std::vector<Claim>& catalogue = dijksman1966::catalogue();
+  int named = 0, construction = 0, own = 0;
+  for (const ExtremeFamily& family : extreme_families()) {
+    for (const Rational& value : family.quick_values) {
+      const ExtremeCase c = family.make(value);
+      for (Arithmetic a : {Arithmetic::Double, Arithmetic::LongDouble}) {
+        const PolygonCheck all = check_polygon(engine, catalogue, family.name, c.polygon, c.rates, a);
+        ASSERT_FALSE(all.claims.empty());
+        for (const ClaimOutcome& shared : all.claims) {  // the claims that apply at this n
+          const auto k = static_cast<size_t>(
+              std::find_if(catalogue.begin(), catalogue.end(), [&](const Claim& x) { return x.info.id == shared.info.id; }) -
+              catalogue.begin());
+          ASSERT_LT(k, catalogue.size()) << shared.info.id;
+          bool inconclusive = false;
+          for (const auto* list : {&shared.instances, &shared.terms})
+            for (const ComparisonOutcome& o : *list) inconclusive = inconclusive || o.cause.has_value();
+          if (!inconclusive) continue;
+          const PolygonCheck alone = check_polygon(engine, {catalogue[k]}, family.name, c.polygon, c.rates, a);
+          ASSERT_EQ(alone.claims.size(), 1u);
+          const ClaimOutcome& own_context = alone.claims[0];
+          ASSERT_EQ(own_context.terms.size(), shared.terms.size()) << shared.info.id;
+          for (int g = 0; g < 2; ++g) {
+            const auto& x = g == 0 ? shared.instances : shared.terms;
+            const auto& y = g == 0 ? own_context.instances : own_context.terms;
+            ASSERT_EQ(x.size(), y.size()) << shared.info.id;
+            for (size_t m = 0; m < x.size(); ++m) {
+              const std::string where = family.name + " " + shared.info.id + " " + x[m].label;
+              ASSERT_EQ(x[m].cause.has_value(), y[m].cause.has_value()) << where;
+              if (!x[m].cause) continue;
+              EXPECT_EQ(x[m].cause->kind, y[m].cause->kind) << where;
+              EXPECT_EQ(x[m].cause->quantity, y[m].cause->quantity) << where;
+              EXPECT_EQ(x[m].cause->relative_bound, y[m].cause->relative_bound) << where;
+              ++named;
+              if (x[m].cause->kind == InconclusiveCause::Kind::Construction) ++construction;
+              if (x[m].cause->kind == InconclusiveCause::Kind::OwnArithmetic) ++own;
+            }
+          }
+        }
+      }
+    }
+  }
+  std::printf("%d causes named, %d of the construction, %d of the claim's own arithmetic\n", named, construction, own);
+  EXPECT_GT(construction, 0);
+  EXPECT_GT(own, 0);  // claims that did not read the construction while others had computed it
 }
 
 }  // namespace
