@@ -162,26 +162,39 @@ class RatePoly {
   }
 
   /// The value at the given rates (omega[j-1], omega_dot[j-1]).
-  /// Exact types add the terms in a balanced tree (core/exact_sum.h), others in order.
+  /// Exact types add the terms in a balanced tree (core/exact_sum.h) and multiply the terms
+  /// that share their first rate variable by it once; others add each term's product in order.
   T evaluate(const std::vector<T>& omega, const std::vector<T>& omega_dot) const {
-    const auto value = [&](const Term& term) {
+    const auto rate = [&](int id) -> const T& {
+      const RateVariable v = RateVariable::from_id(id);
+      const auto k = static_cast<size_t>(v.index - 1);
+      return v.kind == RateVariable::Omega ? omega.at(k) : omega_dot.at(k);
+    };
+    // The coefficient times the monomial's rate variables from the `from`-th on.
+    const auto value = [&](const Term& term, int from) {
       T t = term.second;
-      const Monomial& m = term.first;
-      for (int i = 0; i < m.size(); ++i) {
-        const RateVariable v = RateVariable::from_id(m[i]);
-        const auto k = static_cast<size_t>(v.index - 1);
-        t = t * (v.kind == RateVariable::Omega ? omega.at(k) : omega_dot.at(k));
-      }
+      for (int i = from; i < term.first.size(); ++i) t = t * rate(term.first[i]);
       return t;
     };
+    const std::vector<Term>& t = terms();
     if constexpr (GrowingExactNumber<T>) {
-      std::vector<T> values;
-      values.reserve(terms().size());
-      for (const Term& term : terms()) values.push_back(value(term));
-      return balanced_sum(std::move(values));
+      // The terms with the same first variable are consecutive (the monomials' lexicographic
+      // order): omega_j (c_jj omega_j + c_j,j+1 omega_{j+1} + ...), one product by omega_j.
+      std::vector<T> groups, inner;
+      for (size_t i = 0; i < t.size();) {
+        if (t[i].first.empty()) {
+          groups.push_back(t[i++].second);
+          continue;
+        }
+        const int first = t[i].first[0];
+        inner.clear();
+        for (; i < t.size() && !t[i].first.empty() && t[i].first[0] == first; ++i) inner.push_back(value(t[i], 1));
+        groups.push_back(balanced_sum(std::move(inner)) * rate(first));
+      }
+      return balanced_sum(std::move(groups));
     } else {
       T sum = from_int<T>(0);
-      for (const Term& term : terms()) sum = sum + value(term);
+      for (const Term& term : t) sum = sum + value(term, 0);
       return sum;
     }
   }
