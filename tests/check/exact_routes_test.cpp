@@ -68,6 +68,23 @@ TEST(ExactRoutes, InlineAndCLNRationalsGiveEveryClaimTheSameSidesOnRandomPolygon
   EXPECT_GE(comparisons, 10000);
 }
 
+// A side's value at the rates, its terms multiplied out and added one by one in CLN rationals
+// (the reference for the evaluation's balanced, grouped sums); nullopt where it is undefined.
+std::optional<Rational> sequential_value(const SideValue<InlineRational>& v, const InputRates<Rational>& rates) {
+  if (!v.poly.has_value() || !v.undefined_inputs.empty()) return std::nullopt;
+  Rational sum = 0;
+  for (const auto& [m, coefficient] : v.poly.get().terms()) {
+    Rational t = coefficient.to_rational();
+    for (int i = 0; i < m.size(); ++i) {
+      const RateVariable r = RateVariable::from_id(m[i]);
+      const auto at = static_cast<size_t>(r.index - 1);
+      t = t * (r.kind == RateVariable::Omega ? rates.omega[at] : rates.omega_dot[at]);
+    }
+    sum = sum + t;
+  }
+  return sum;
+}
+
 // An exact claim computes a total once when both sides are the same polynomial (data_claim.h).
 // Every total must still be its own side's value at the rates: checked here against the side's
 // terms summed one by one in CLN rationals, on claims that hold and on the wrong variants of
@@ -89,25 +106,8 @@ TEST(ExactRoutes, EveryTotalIsItsOwnSidesValueAtTheRates) {
           const std::string where = claim.info.id + " n=" + std::to_string(n) + " index=" + std::to_string(index) +
                                     " " + sides.instances[k].full_label();
           const Comparison<InlineRational>& total = sides.instances[k];
-          std::optional<Rational> values[2];
-          int side = 0;
-          for (const ClaimExpression* e : {&claim.lhs, &claim.rhs}) {
-            const SideValue<InlineRational> v = evaluate_side(claim, *e, ctx, j);
-            if (v.poly.has_value() && v.undefined_inputs.empty()) {
-              Rational sum = 0;
-              for (const auto& [m, coefficient] : v.poly.get().terms()) {
-                Rational t = coefficient.to_rational();
-                for (int i = 0; i < m.size(); ++i) {
-                  const RateVariable r = RateVariable::from_id(m[i]);
-                  const auto at = static_cast<size_t>(r.index - 1);
-                  t = t * (r.kind == RateVariable::Omega ? c.rates.omega[at] : c.rates.omega_dot[at]);
-                }
-                sum = sum + t;
-              }
-              values[side] = sum;
-            }
-            ++side;
-          }
+          const std::optional<Rational> values[2] = {sequential_value(evaluate_side(claim, claim.lhs, ctx, j), c.rates),
+                                                     sequential_value(evaluate_side(claim, claim.rhs, ctx, j), c.rates)};
           for (int s = 0; s < 2; ++s) {
             const Defined<InlineRational>& got = s == 0 ? total.lhs : total.rhs;
             ASSERT_EQ(got.has_value(), values[s].has_value()) << where << (s == 0 ? " lhs" : " rhs");
