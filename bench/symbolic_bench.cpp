@@ -1,8 +1,11 @@
-// BM_SymbolicDerivation/n: symbols, loop closure, its two time derivatives, the exact solve and
-// the compiled motion tape (GroundTruthEngine::Derivation does all of it). The derivation is
-// meant to be O(n) (no global simplifier): Complexity() fits the growth across n.
-// BM_LoopSolution/n times the symbols and derive_loop_solution alone, so that the difference
-// between the two is the cost of building the tape inputs and compiling the motion tape.
+// BM_SymbolicDerivation/n: what a check derives once per n (GroundTruthEngine::Derivation): the
+// canonical form of the solved loop closure assembled from the closed form of its two time
+// derivatives, and the compiled motion tape (symbolic/motion_tape.h). It is meant to be O(n):
+// Complexity() fits the growth across n.
+// BM_GiNaCDerivation/n: GiNaC's derivation of the same tape (the reference, SymbolicDerivation
+// and its motion_tape()): symbols, loop closure, its two time derivatives by the product rule, the
+// exact solve by Cramer's rule written structurally, and the compilation of GiNaC's trees.
+// BM_LoopSolution/n times the symbols and derive_loop_solution alone.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -22,9 +25,20 @@ void BM_SymbolicDerivation(benchmark::State& state) {
     benchmark::DoNotOptimize(last.get());
   }
   // Measured after the timed loop, on the last derivation.
+  state.counters["tape"] = benchmark::Counter(static_cast<double>(last->motion.size()));
+  state.SetComplexityN(n);
+}
+
+void BM_GiNaCDerivation(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  std::unique_ptr<GroundTruthEngine::SymbolicDerivation> last;
+  for (auto _ : state) {
+    last = std::make_unique<GroundTruthEngine::SymbolicDerivation>(n);
+    const Tape motion = last->motion_tape();
+    benchmark::DoNotOptimize(motion.size());
+  }
   state.counters["tree_omega_dot_n1"] =
       benchmark::Counter(static_cast<double>(expression_tree_size(last->solution.omega_dot_n1)));
-  state.counters["tape"] = benchmark::Counter(static_cast<double>(last->motion.size()));
   state.SetComplexityN(n);
 }
 
@@ -45,6 +59,7 @@ void derivation_sizes(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_SymbolicDerivation)->Apply(derivation_sizes);
+BENCHMARK(BM_GiNaCDerivation)->Apply(derivation_sizes);
 BENCHMARK(BM_LoopSolution)->Apply(derivation_sizes);
 
 }  // namespace

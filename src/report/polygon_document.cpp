@@ -143,7 +143,7 @@ Section derivation_section(GroundTruthEngine& engine, const PolygonScene& scene,
     s.blocks.push_back(table_block(std::move(values)));
     return s;
   }
-  const auto& d = engine.derivation(n);
+  const auto& d = engine.symbolic_derivation(n);
   const LoopSolution& sol = d.solution;
   const PolygonSymbols& sym = d.symbols;
   const std::string N = std::to_string(n), n1 = std::to_string(n - 1), n2 = std::to_string(n - 2);

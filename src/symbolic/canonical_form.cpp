@@ -36,6 +36,13 @@ CanonicalForm::CanonicalForm(const std::vector<ex>& inputs) {
   }
 }
 
+CanonicalForm::CanonicalForm(std::vector<std::string> input_names) : input_names_(std::move(input_names)) {
+  Node unit;
+  unit.key = text_hash("1");
+  nodes_.push_back(std::move(unit));
+  interned_.emplace("1", one);
+}
+
 CanonicalForm CanonicalForm::with_atoms() {
   CanonicalForm f(std::vector<ex>{});
   f.atoms_ = true;
@@ -188,54 +195,82 @@ CanonicalForm::Split CanonicalForm::split(const ex& e) {
   return s;
 }
 
+namespace {
+
+/// The primitive part p of a factor, raised to k, as (base, exponent) pairs.
+void append_factors(const CanonicalForm& form, CanonicalForm::Id p, int k, std::vector<std::pair<CanonicalForm::Id, int>>& out) {
+  if (p == CanonicalForm::one) return;
+  if (form.node(p).kind == CanonicalForm::Kind::Product) {
+    for (const auto& [b, x] : form.node(p).factors) out.emplace_back(b, x * k);
+  } else {
+    out.emplace_back(p, k);
+  }
+}
+
+}  // namespace
+
+CanonicalForm::Split CanonicalForm::number(const numeric& value) const { return {value, one}; }
+
+CanonicalForm::Split CanonicalForm::input(std::uint32_t index) {
+  LINKPROOF_ASSERT(index < input_names_.size(), "canonical form: input index out of range");
+  Node n;
+  n.kind = Kind::Symbol;
+  n.input = index;
+  return {numeric(1), intern(std::move(n))};
+}
+
+CanonicalForm::Split CanonicalForm::sum(const std::vector<Split>& terms) {
+  std::vector<std::pair<Id, numeric>> parts;
+  parts.reserve(terms.size());
+  for (const Split& t : terms)
+    if (!t.content.is_zero()) parts.emplace_back(t.primitive, t.content);
+  Split s{numeric(0), one};
+  s.primitive = sum_of(std::move(parts), s.content);
+  return s;
+}
+
+CanonicalForm::Split CanonicalForm::product(const std::vector<Split>& factors) {
+  numeric content = 1;
+  std::vector<std::pair<Id, int>> parts;
+  for (const Split& f : factors) {
+    content = content * f.content;
+    append_factors(*this, f.primitive, 1, parts);
+  }
+  if (content.is_zero()) return {numeric(0), one};
+  return {content, product_of(std::move(parts))};
+}
+
+CanonicalForm::Split CanonicalForm::power(const Split& base, int exponent) {
+  if (exponent == 0) return {numeric(1), one};
+  if (base.content.is_zero()) {
+    if (exponent < 0) throw InternalError("tape: a power of zero with a negative exponent");
+    return {numeric(0), one};
+  }
+  std::vector<std::pair<Id, int>> parts;
+  append_factors(*this, base.primitive, exponent, parts);
+  return {base.content.power(exponent), product_of(std::move(parts))};
+}
+
 CanonicalForm::Split CanonicalForm::split_uncached(const ex& e) {
-  // The primitive part p of a factor, raised to k, as (base, exponent) pairs.
-  auto append_factors = [&](Id p, int k, std::vector<std::pair<Id, int>>& out) {
-    if (p == one) return;
-    if (nodes_[p].kind == Kind::Product) {
-      for (const auto& [b, x] : nodes_[p].factors) out.emplace_back(b, x * k);
-    } else {
-      out.emplace_back(p, k);
-    }
-  };
   if (is_a<numeric>(e)) {
     const numeric& num = ex_to<numeric>(e);
     if (!num.is_rational() && atoms_) return atom(e);
     if (!num.is_rational()) throw InternalError("tape: non-rational constant " + ex_text(e));
-    return {num, one};
+    return number(num);
   }
   if (is_a<symbol>(e)) {
     auto it = input_index_.find(e);
     if (it == input_index_.end() && atoms_) return atom(e);
     if (it == input_index_.end()) throw InternalError("tape: symbol " + ex_text(e) + " is not an input");
-    Node n;
-    n.kind = Kind::Symbol;
-    n.input = it->second;
-    return {numeric(1), intern(std::move(n))};
+    return input(it->second);
   }
-  if (is_a<add>(e)) {
-    std::vector<std::pair<Id, numeric>> terms;
-    terms.reserve(e.nops());
-    for (size_t i = 0; i < e.nops(); ++i) {
-      const Split t = split(e.op(i));
-      if (!t.content.is_zero()) terms.emplace_back(t.primitive, t.content);
-    }
-    Split s{numeric(0), one};
-    s.primitive = sum_of(std::move(terms), s.content);
-    return s;
+  if (is_a<add>(e) || is_a<mul>(e)) {
+    std::vector<Split> operands;
+    operands.reserve(e.nops());
+    for (size_t i = 0; i < e.nops(); ++i) operands.push_back(split(e.op(i)));
+    return is_a<add>(e) ? sum(operands) : product(operands);
   }
-  if (is_a<mul>(e)) {
-    numeric content = 1;
-    std::vector<std::pair<Id, int>> factors;
-    for (size_t i = 0; i < e.nops(); ++i) {
-      const Split f = split(e.op(i));
-      content = content * f.content;
-      append_factors(f.primitive, 1, factors);
-    }
-    if (content.is_zero()) return {numeric(0), one};
-    return {content, product_of(std::move(factors))};
-  }
-  if (is_a<power>(e)) {
+  if (is_a<GiNaC::power>(e)) {
     const ex& expo = e.op(1);
     if ((!is_a<numeric>(expo) || !ex_to<numeric>(expo).is_integer()) && atoms_) return atom(e);
     if (!is_a<numeric>(expo) || !ex_to<numeric>(expo).is_integer())
@@ -243,13 +278,8 @@ CanonicalForm::Split CanonicalForm::split_uncached(const ex& e) {
     const int k = ex_to<numeric>(expo).to_int();
     if (k == 0) return {numeric(1), one};
     const Split b = split(e.op(0));
-    if (b.content.is_zero()) {
-      if (k < 0) throw InternalError("tape: a power of zero with negative exponent " + ex_text(e));
-      return {numeric(0), one};
-    }
-    std::vector<std::pair<Id, int>> factors;
-    append_factors(b.primitive, k, factors);
-    return {b.content.power(k), product_of(std::move(factors))};
+    if (b.content.is_zero() && k < 0) throw InternalError("tape: a power of zero with negative exponent " + ex_text(e));
+    return power(b, k);
   }
   if (atoms_) return atom(e);
   throw InternalError("tape: cannot compile " + ex_text(e));
@@ -262,7 +292,7 @@ CanonicalForm::Split CanonicalForm::atom(const ex& e) {
   n.atom = e;
   if (is_a<symbol>(e)) {
     n.key = mix(text_hash("atom"), text_hash(ex_to<symbol>(e).get_name()));
-  } else if (is_a<function>(e) || is_a<power>(e)) {
+  } else if (is_a<function>(e) || is_a<GiNaC::power>(e)) {
     // By name and the canonical form of the arguments: GiNaC's form of an argument (a sum in
     // a product, say) is no more canonical than anywhere else.
     n.key = text_hash(is_a<function>(e) ? ex_to<function>(e).get_name() : std::string("^"));

@@ -75,6 +75,9 @@ class CanonicalForm {
   /// `inputs` are the symbols an expression may contain; a symbol is identified by its
   /// position here (and named in keys by its name).
   explicit CanonicalForm(const std::vector<GiNaC::ex>& inputs);
+  /// A form whose inputs are known by name only: its expressions are built with the builders
+  /// below (motion_tape.h), not split from GiNaC trees.
+  explicit CanonicalForm(std::vector<std::string> input_names);
   /// A form without inputs in which whatever is not a rational function is an Atom.
   static CanonicalForm with_atoms();
 
@@ -82,6 +85,17 @@ class CanonicalForm {
   /// a rational function of the inputs with rational coefficients.
   Split split(const GiNaC::ex& e);
 
+  /// Builders: the split of a number, of input `index`, and of the sum, product or integer
+  /// power of split operands, each what split() gives for the GiNaC tree of that shape (split()
+  /// is made of them). A sum does not merge an operand that is itself a sum into its terms
+  /// (GiNaC's add does, before split() sees it): a builder passes those terms one by one.
+  Split number(const GiNaC::numeric& value) const;
+  Split input(std::uint32_t index);
+  Split sum(const std::vector<Split>& terms);
+  Split product(const std::vector<Split>& factors);
+  Split power(const Split& base, int exponent);
+
+  size_t input_count() const { return input_names_.size(); }
   const Node& node(Id id) const { return nodes_[id]; }
 
   /// A total order of primitive parts that is the same in every run: <0, 0, >0.

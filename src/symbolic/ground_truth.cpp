@@ -3,6 +3,7 @@
 #include <string>
 
 #include "linkproof/core/error.h"
+#include "symbolic/motion_tape.h"
 
 namespace linkproof {
 
@@ -41,12 +42,15 @@ void append_coefficients(const ex& e, const PolygonSymbols& s, std::vector<ex>& 
 
 }  // namespace
 
-GroundTruthEngine::Derivation::Derivation(int n)
-    : symbols(n),
-      solution(derive_loop_solution(symbols)),
-      inputs(make_inputs(symbols)),
-      motion({solution.omega_n2, solution.omega_n1, solution.omega_dot_n2, solution.omega_dot_n1}, inputs,
-             kDenominator) {}
+GroundTruthEngine::Derivation::Derivation(int n) : motion(derive_motion_tape(n, kDenominator)) {}
+
+GroundTruthEngine::SymbolicDerivation::SymbolicDerivation(int n)
+    : symbols(n), solution(derive_loop_solution(symbols)), inputs(make_inputs(symbols)) {}
+
+Tape GroundTruthEngine::SymbolicDerivation::motion_tape() const {
+  return Tape({solution.omega_n2, solution.omega_n1, solution.omega_dot_n2, solution.omega_dot_n1}, inputs,
+              kDenominator);
+}
 
 const GroundTruthEngine::Derivation& GroundTruthEngine::derivation(int n) {
   auto& slot = cache_[n];
@@ -54,9 +58,15 @@ const GroundTruthEngine::Derivation& GroundTruthEngine::derivation(int n) {
   return *slot;
 }
 
+const GroundTruthEngine::SymbolicDerivation& GroundTruthEngine::symbolic_derivation(int n) {
+  auto& slot = symbolic_cache_[n];
+  if (!slot) slot = std::make_unique<SymbolicDerivation>(n);
+  return *slot;
+}
+
 const Tape& GroundTruthEngine::coefficient_tape(int n) {
-  derivation(n);
-  Derivation& d = *cache_[n];
+  symbolic_derivation(n);
+  SymbolicDerivation& d = *symbolic_cache_[n];
   if (!d.coefficients) {
     std::vector<ex> outputs;
     append_coefficients(d.solution.omega_dot_n1, d.symbols, outputs);

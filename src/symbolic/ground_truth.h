@@ -51,17 +51,29 @@ struct SolutionTerms {
 
 class GroundTruthEngine {
  public:
+  /// What a check evaluates for n sides: the motion tape (outputs omega_{n-2}, omega_{n-1},
+  /// omega-dot_{n-2}, omega-dot_{n-1}; inputs x_1..x_{n-1}, y_1..y_{n-1}, omega_j, omega_dot_j),
+  /// built directly from the closed form of the solved loop closure (motion_tape.h).
   struct Derivation {
     explicit Derivation(int n);
+    Tape motion;
+  };
+  /// GiNaC's derivation of the same (loop_closure.h): the reference the motion tape is tested
+  /// against (it compiles to the same tape), and the expressions a derivation report prints.
+  struct SymbolicDerivation {
+    explicit SymbolicDerivation(int n);
+    /// GiNaC's solution compiled: the same tape as Derivation::motion, instruction for instruction.
+    Tape motion_tape() const;
     PolygonSymbols symbols;
     LoopSolution solution;
-    std::vector<GiNaC::ex> inputs;    ///< tape inputs: x_1..x_{n-1}, y_1..y_{n-1}, omega_j, omega_dot_j
-    Tape motion;                        ///< outputs omega_{n-2}, omega_{n-1}, omega-dot_{n-2}, omega-dot_{n-1}
+    std::vector<GiNaC::ex> inputs;      ///< the tape's inputs as symbols
     std::unique_ptr<Tape> coefficients; ///< outputs for side n-1 then n-2: [omega-dot_j], [omega_j^2], [pairs]
   };
 
   /// The derivation for n sides (n >= 4), made on first use.
   const Derivation& derivation(int n);
+  /// GiNaC's derivation for n sides, made on first use.
+  const SymbolicDerivation& symbolic_derivation(int n);
   /// The symbolically differentiated coefficient tape for n sides, made on first use (a second
   /// route to terms(): for tests, not used by checks).
   const Tape& coefficient_tape(int n);
@@ -166,6 +178,7 @@ class GroundTruthEngine {
   }
 
   std::map<int, std::unique_ptr<Derivation>> cache_;
+  std::map<int, std::unique_ptr<SymbolicDerivation>> symbolic_cache_;
 };
 
 }  // namespace linkproof

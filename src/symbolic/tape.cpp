@@ -17,12 +17,10 @@ using namespace GiNaC;
 /// happened to store them in this run.
 class TapeCompiler {
  public:
-  TapeCompiler(Tape& tape, const std::vector<ex>& inputs) : tape_(tape), form_(inputs) {}
+  TapeCompiler(Tape& tape, CanonicalForm form) : tape_(tape), form_(std::move(form)) {}
 
-  std::uint32_t compile(const ex& e) {
-    const CanonicalForm::Split s = form_.split(e);
-    return term(s.primitive, s.content);
-  }
+  std::uint32_t compile(const ex& e) { return compile(form_.split(e)); }
+  std::uint32_t compile(const CanonicalForm::Split& s) { return term(s.primitive, s.content); }
 
  private:
   using Id = CanonicalForm::Id;
@@ -122,8 +120,14 @@ class TapeCompiler {
 
 Tape::Tape(const std::vector<ex>& outputs, const std::vector<ex>& inputs, std::string denominator_name)
     : input_count_(inputs.size()), denominator_name_(std::move(denominator_name)) {
-  TapeCompiler compiler(*this, inputs);
+  TapeCompiler compiler(*this, CanonicalForm(inputs));
   for (const ex& o : outputs) outputs_.push_back(compiler.compile(o));
+}
+
+Tape::Tape(CanonicalForm form, const std::vector<CanonicalForm::Split>& outputs, std::string denominator_name)
+    : input_count_(form.input_count()), denominator_name_(std::move(denominator_name)) {
+  TapeCompiler compiler(*this, std::move(form));
+  for (const CanonicalForm::Split& o : outputs) outputs_.push_back(compiler.compile(o));
 }
 
 }  // namespace linkproof

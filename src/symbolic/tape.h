@@ -23,6 +23,7 @@
 
 #include "linkproof/core/error.h"
 #include "core/scalar.h"
+#include "symbolic/canonical_form.h"
 
 namespace linkproof {
 
@@ -41,6 +42,9 @@ class Tape {
   /// quantity reported as undefined when a division by exact zero occurs.
   Tape(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
        std::string denominator_name);
+  /// Compiles `outputs`, built with the builders of `form` (no GiNaC trees), as functions of
+  /// its inputs. Equal canonical forms give the same tape whichever way they were made.
+  Tape(CanonicalForm form, const std::vector<CanonicalForm::Split>& outputs, std::string denominator_name);
 
   size_t input_count() const { return input_count_; }
   /// Number of instructions: the size of the shared DAG.

@@ -113,7 +113,7 @@ TEST(GroundTruth, SymbolicSolutionEqualsClosedFormIdenticallyForN4To6) {
   using namespace GiNaC;
   for (int n = 4; n <= 6; ++n) {
     GroundTruthEngine engine;
-    const auto& d = engine.derivation(n);
+    const auto& d = engine.symbolic_derivation(n);
     const auto& s = d.symbols;
     const ex ax = s.x(n - 2), ay = s.y(n - 2), bx = s.x(n - 1), by = s.y(n - 1);
     const ex D = ax * by - ay * bx;
