@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <random>
+#include <sstream>
 #include <vector>
 
 #include "core/inline_rational.h"
@@ -120,6 +121,29 @@ TEST(InlineRationalOps, ResultsPastTheWordsAreCLNsCanonicalValues) {
   ASSERT_FALSE(s.is_word());
   EXPECT_TRUE(cln::equal(s.to_rational(), (max + 1) / 7));
   EXPECT_EQ(s.to_rational() - (max + 1) / 7, 0);
+}
+
+// A word value is kept unreduced (6/12); read as a CLN rational it is reduced by the word gcd
+// and built from its coprime parts: CLN's canonical value, an integer where the reduced
+// denominator is 1.
+TEST(InlineRationalOps, UnreducedWordValuesReadAsCLNsCanonicalValues) {
+  auto word = [](long n, long d) { return InlineRational(Rational(n) / d); };
+  const InlineRational half = word(2, 3) * word(3, 4), minus_half = word(-2, 3) * word(3, 4);
+  const InlineRational one = word(3, 4) * word(4, 3), zero = word(0, 1) * word(3, 4);
+  for (const InlineRational* x : {&half, &minus_half, &one, &zero}) ASSERT_TRUE(x->is_word());
+  EXPECT_TRUE(cln::equal(half.to_rational(), Rational(1) / 2));
+  EXPECT_EQ(cln::denominator(half.to_rational()), 2);
+  EXPECT_EQ(cln::numerator(minus_half.to_rational()), -1);
+  EXPECT_EQ(cln::denominator(minus_half.to_rational()), 2);
+  EXPECT_TRUE(cln::equal(one.to_rational(), Rational(1)));
+  EXPECT_EQ(cln::denominator(one.to_rational()), 1);
+  EXPECT_TRUE(cln::zerop(zero.to_rational()));
+  std::ostringstream text;
+  text << half.to_rational() << " " << one.to_rational() << " " << minus_half.to_rational();
+  EXPECT_EQ(text.str(), "1/2 1 -1/2");
+  // The largest parts: (2^63 - 1) / (2^63 - 1) is 1, and their product with 2/2 is too.
+  const Rational max(cln::cl_I(static_cast<long>(kMax)));
+  EXPECT_EQ(cln::denominator((InlineRational(max) / InlineRational(max)).to_rational()), 1);
 }
 
 TEST(InlineRationalOps, DivisionByZeroThrowsWhatCLNThrows) {
