@@ -1,7 +1,8 @@
 // The library's main entry point, check_polygon over the whole Dijksman (1966) catalogue:
 //   BM_ExactCheckAllClaims/n   exact, every comparison's evidence kept (as `check`), in polygons
 //                              per second;
-//   BM_CheckExact/n            one polygon, exact, evidence of the headlines only (as `sweep`);
+//   BM_CheckExact/n            one polygon, exact, verdicts and the headlines a sweep keeps as
+//                              examples (Evidence::Examples, as `sweep`);
 //   BM_CheckDouble/n           the same in `--arith double` (Tracked<double>): the ratio
 //                              BM_CheckExact/n over BM_CheckDouble/n is the speed-up of double.
 // Derivations (the n-side motion tape and the n = 4 tape used for each four-bar j) are made
@@ -50,7 +51,7 @@ void check_one(benchmark::State& state, Arithmetic a) {
   engine.derivation(4);
   size_t unexpected = 0;
   for (auto _ : state) {
-    PolygonCheck r = check_polygon(engine, catalogue, "bench", c.polygon, c.rates, a, Evidence::Headline);
+    PolygonCheck r = check_polygon(engine, catalogue, "bench", c.polygon, c.rates, a, Evidence::Examples);
     unexpected += std::any_of(r.claims.begin(), r.claims.end(), [](const ClaimOutcome& o) { return !o.is_as_expected(); });
     benchmark::DoNotOptimize(r);
   }

@@ -32,6 +32,12 @@ void name_inconclusive_cause(const PolygonContext<T>& context, const typename Po
 }
 }  // namespace
 
+bool is_unexpected(Expectation expected, Verdict v) {
+  return v == Verdict::Error || (expected == Expectation::Holds && v == Verdict::Fails);
+}
+
+bool is_disproof(Expectation expected, Verdict v) { return expected == Expectation::Fails && v == Verdict::Fails; }
+
 template <class T>
 ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evidence evidence) {
   ClaimOutcome out;
@@ -45,7 +51,7 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
       out.error = "the claim produced no comparison";
       return out;
     }
-    if (evidence == Evidence::Headline) {
+    if (evidence != Evidence::All) {
       // Verdicts only; the text of one comparison, the headline (the first whose verdict is
       // the claim's), is made at the end: the evidence of the others is never printed.
       std::vector<Verdict> verdicts;
@@ -54,6 +60,9 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
       for (const auto* group : {&sides.instances, &sides.terms})
         for (const auto& c : *group) v = combine(v, verdicts.emplace_back(judge_verdict(c)));
       out.verdict = v;
+      // A sweep keeps a headline only as an example (sweep_case.cpp).
+      if (evidence == Evidence::Examples && !is_unexpected(claim.info.expected, v) && !is_disproof(claim.info.expected, v))
+        return out;
       const auto first = std::find(verdicts.begin(), verdicts.end(), v) - verdicts.begin();
       const size_t k = first == static_cast<std::ptrdiff_t>(verdicts.size()) ? 0 : static_cast<size_t>(first);
       const Comparison<T>* headline =
@@ -170,6 +179,7 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
     std::optional<PolygonContext<T>> built;
     try {
       built.emplace(build_polygon_context<T>(engine, polygon, rates));
+      built->values_on_demand = evidence == Evidence::Examples;
     } catch (const cln::floating_point_exception& e) {
       // The exact input does not fit this arithmetic's exponent range (e.g. 1e400 in double):
       // no claim can be judged in it, which is inconclusive, not an internal error.

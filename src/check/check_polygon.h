@@ -32,4 +32,10 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
 template <class T>
 ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evidence evidence = Evidence::All);
 
+/// True if this outcome makes a sweep's case an example of "unexpected" (a true claim fails, or
+/// any evaluation errors).
+bool is_unexpected(Expectation expected, Verdict v);
+/// True if this outcome disproves an erratum reading (expected to fail, and fails).
+bool is_disproof(Expectation expected, Verdict v);
+
 }  // namespace linkproof

@@ -181,6 +181,14 @@ ComparisonOutcome judge_tracked(const Comparison<Tracked<F>>& c) {
 template <class T>
 ComparisonOutcome judge(const Comparison<T>& c) {
   if constexpr (ScalarTraits<T>::is_exact) {
+    if (c.same_value) {  // both sides one polynomial: their common value, made now
+      Comparison<T> made = c;
+      const T value = c.same_value();
+      made.lhs = value;
+      made.rhs = value;
+      made.same_value = nullptr;
+      return judge_exact(made);
+    }
     return judge_exact(c);
   } else {
     return judge_tracked(c);
@@ -189,6 +197,7 @@ ComparisonOutcome judge(const Comparison<T>& c) {
 
 template <class T>
 Verdict judge_verdict(const Comparison<T>& c) {
+  if (c.same_value) return Verdict::Holds;  // one polynomial on both sides: equal at any rates
   if (!c.lhs.has_value() || !c.rhs.has_value()) return Verdict::Undefined;
   if constexpr (ScalarTraits<T>::is_exact) {
     return is_zero(c.lhs.get() - c.rhs.get()) ? Verdict::Holds : Verdict::Fails;

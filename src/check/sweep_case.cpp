@@ -24,12 +24,6 @@ const SweepExample* SweepCase::example_for(const std::string& claim_id) const {
   return nullptr;
 }
 
-bool is_unexpected(Expectation expected, Verdict v) {
-  return v == Verdict::Error || (expected == Expectation::Holds && v == Verdict::Fails);
-}
-
-bool is_disproof(Expectation expected, Verdict v) { return expected == Expectation::Fails && v == Verdict::Fails; }
-
 SweepCase run_sweep_case(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const SweepOptions& o,
                          long k) {
   const auto [n, index] = SweepPlan(o).at(k);
@@ -37,7 +31,7 @@ SweepCase run_sweep_case(GroundTruthEngine& engine, const std::vector<Claim>& ca
   c.k = k;
   c.polygon = generate_random_polygon(o.seed, n, index);
   const PolygonCheck check = check_polygon(engine, catalogue, fmt::format("random-n{}-i{}", n, index),
-                                           c.polygon.polygon, c.polygon.rates, o.arithmetic, Evidence::Headline);
+                                           c.polygon.polygon, c.polygon.rates, o.arithmetic, Evidence::Examples);
   c.not_applicable = check.not_applicable;
   for (const ClaimOutcome& outcome : check.claims) {
     c.verdicts[outcome.info.id] = outcome.verdict;

@@ -47,12 +47,6 @@ struct SweepCase {
   const SweepExample* example_for(const std::string& claim_id) const;
 };
 
-/// True if this outcome makes the case an example of "unexpected" (a true claim fails, or any
-/// evaluation errors).
-bool is_unexpected(Expectation expected, Verdict v);
-/// True if this outcome disproves an erratum reading (expected to fail, and fails).
-bool is_disproof(Expectation expected, Verdict v);
-
 /// Runs every claim of `catalogue` on case k of the sweep `o` in the sweep's arithmetic.
 SweepCase run_sweep_case(GroundTruthEngine& engine, const std::vector<Claim>& catalogue, const SweepOptions& o,
                          long k);

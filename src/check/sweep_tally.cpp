@@ -1,5 +1,7 @@
 #include "check/sweep_tally.h"
 
+#include "check/check_polygon.h"
+
 namespace linkproof {
 
 SweepTally::SweepTally(const std::vector<Claim>& catalogue, const SweepOptions& options) {

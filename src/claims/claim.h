@@ -44,6 +44,11 @@ struct Comparison {
   /// A term's comparison: its monomial. Its label is written only when the comparison is judged
   /// with its text: a sweep judges the verdicts of all m^2 terms and writes the text of one.
   std::optional<Monomial> monomial{};  // {}: a comparison of a statement is {label, lhs, rhs}
+  /// Exact, on demand (PolygonContext::values_on_demand): both sides are one polynomial in the
+  /// rates, term by term, so they are equal at any rates. lhs and rhs are then left pending and
+  /// this makes their common value, when the comparison is judged with its text; its verdict
+  /// alone (judge_verdict) needs no value. Empty otherwise.
+  std::function<T()> same_value{};
   /// "total", "j=1", "omega_dot[1]", "j=2: omega[1]*omega[2]", ...
   std::string full_label() const { return monomial ? label_head + monomial_label(*monomial) : label_head; }
 };

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 #include <string>
@@ -79,18 +80,46 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
   ClaimSides<T> s;
   const std::vector<T>& w = c.rates.omega;
   const std::vector<T>& wd = c.rates.omega_dot;
-  const auto add = [&](const std::string& prefix, const SideValue<T>& l, const SideValue<T>& r) {
-    // Exact: two sides with the same terms have the same value at any rates, so it is computed
-    // once (a side's value at n = 1000 is a sum of 500,000 products of growing rationals). The
-    // term-by-term comparisons below still compare every coefficient.
-    bool same_terms = false;
+  const auto add = [&](const std::string& prefix, SideValue<T> lhs_side, SideValue<T> rhs_side) {
+    // Shared: a total made on demand reads a side after this returns.
+    const auto shared_lhs = std::make_shared<const SideValue<T>>(std::move(lhs_side));
+    const auto shared_rhs = std::make_shared<const SideValue<T>>(std::move(rhs_side));
+    const SideValue<T>& l = *shared_lhs;
+    const SideValue<T>& r = *shared_rhs;
+    const std::string label = prefix.empty() ? "total" : prefix;
+    // Exact: the sides' values at the rates differ only by their differing terms, lhs - rhs =
+    // l' - r' (differing_terms). Where there are none, the sides are one polynomial and have one
+    // value, made once from the side with fewer terms (a side may keep the terms that
+    // cancelled), and on demand only where no verdict reads it; elsewhere the rhs is lhs - l' + r'
+    // where those are fewer terms than the rhs has (a side's value at n = 1000 is a sum of
+    // 500,000 products of growing rationals). The term-by-term comparisons below still compare
+    // every coefficient.
+    std::optional<std::pair<RatePoly<T>, RatePoly<T>>> differing;
     if constexpr (GrowingExactNumber<T>)
-      same_terms = l.undefined_inputs.empty() && r.undefined_inputs.empty() && l.poly.has_value() &&
-                   r.poly.has_value() && same_polynomial(l.poly.get(), r.poly.get());
-    std::optional<T> lhs_total;
-    s.instances.push_back(compare<T>(
-        prefix.empty() ? "total" : prefix, [&] { return *(lhs_total = l.total(w, wd)); },
-        [&] { return same_terms && lhs_total ? *lhs_total : r.total(w, wd); }));
+      if (l.undefined_inputs.empty() && r.undefined_inputs.empty() && l.poly.has_value() && r.poly.has_value()) {
+        auto d = differing_terms(l.poly.get(), r.poly.get());
+        if (d.first.terms().size() + d.second.terms().size() < r.poly.get().terms().size() ||
+            (d.first.terms().empty() && d.second.terms().empty()))
+          differing = std::move(d);
+      }
+    if (differing && differing->first.terms().empty() && differing->second.terms().empty()) {
+      const auto fewer = r.poly.get().terms().size() < l.poly.get().terms().size() ? shared_rhs : shared_lhs;
+      Comparison<T> total{label, Defined<T>::pending(), Defined<T>::pending()};
+      total.same_value = [fewer, w, wd] { return fewer->total(w, wd); };
+      if (!c.values_on_demand) {
+        const T value = total.same_value();
+        total.lhs = value;
+        total.rhs = value;
+        total.same_value = nullptr;
+      }
+      s.instances.push_back(std::move(total));
+    } else {
+      std::optional<T> lhs_total;
+      s.instances.push_back(compare<T>(label, [&] { return *(lhs_total = l.total(w, wd)); }, [&] {
+        if (!differing || !lhs_total) return r.total(w, wd);
+        return *lhs_total - differing->first.evaluate(w, wd) + differing->second.evaluate(w, wd);
+      }));
+    }
     // Term by term, if either side is a polynomial of positive degree in the rates.
     if (!l.poly.has_value() || !r.poly.has_value() || (l.poly.get().is_constant() && r.poly.get().is_constant()))
       return;

@@ -56,6 +56,9 @@ class PolygonContext {
   int n = 0;
   Polygon<T> polygon;
   InputRates<T> rates;
+  /// Set where only verdicts are read (Evidence::Examples): a comparison may then leave values
+  /// its verdict does not need to be made on demand (Comparison::same_value).
+  bool values_on_demand = false;
 
   /// The engine's exact motion of the polygon.
   const Defined<PolygonMotion<T>>& truth() const {

@@ -199,21 +199,33 @@ class RatePoly {
     }
   }
 
-  /// Whether a and b are the same polynomial: the same coefficient for every monomial, a term
-  /// with a zero coefficient counting as absent (a side may keep the terms that cancelled).
-  /// Exact types only: for a floating-point T, equal midpoints are no statement about values.
-  friend bool same_polynomial(const RatePoly& a, const RatePoly& b)
+  /// The terms in which a and b differ, each with its own side's coefficient: a' and b' with
+  /// a - b = a' - b'. A monomial whose coefficients differ is in each side's part where its
+  /// coefficient there is not zero; a term with a zero coefficient counts as absent (a side may
+  /// keep the terms that cancelled).
+  /// Both are empty exactly when a and b are the same polynomial. Exact types only: for a
+  /// floating-point T, equal midpoints are no statement about values.
+  friend std::pair<RatePoly, RatePoly> differing_terms(const RatePoly& a, const RatePoly& b)
     requires ScalarTraits<T>::is_exact
   {
     const auto &at = a.terms(), &bt = b.terms();
-    size_t i = 0, k = 0;
-    while (true) {
-      while (i < at.size() && linkproof::is_zero(at[i].second)) ++i;
-      while (k < bt.size() && linkproof::is_zero(bt[k].second)) ++k;
-      if (i == at.size() || k == bt.size()) return i == at.size() && k == bt.size();
-      if (!(at[i].first == bt[k].first) || !(at[i].second == bt[k].second)) return false;
-      ++i, ++k;
+    std::pair<RatePoly, RatePoly> d;  // appended in ascending order: sorted
+    for (size_t i = 0, k = 0; i < at.size() || k < bt.size();) {
+      if (k == bt.size() || (i < at.size() && at[i].first < bt[k].first)) {
+        if (!linkproof::is_zero(at[i].second)) d.first.terms_.push_back(at[i]);
+        ++i;
+      } else if (i == at.size() || bt[k].first < at[i].first) {
+        if (!linkproof::is_zero(bt[k].second)) d.second.terms_.push_back(bt[k]);
+        ++k;
+      } else {
+        if (!(at[i].second == bt[k].second)) {
+          if (!linkproof::is_zero(at[i].second)) d.first.terms_.push_back(at[i]);
+          if (!linkproof::is_zero(bt[k].second)) d.second.terms_.push_back(bt[k]);
+        }
+        ++i, ++k;
+      }
     }
+    return d;
   }
 
   /// In place: O(terms of b), whatever the size of *this (the terms are sorted once, when read).

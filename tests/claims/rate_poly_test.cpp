@@ -201,32 +201,46 @@ TEST(RatePolyTerms, ConstantDivisionAndEvaluationInExactArithmetic) {
   EXPECT_THROW((void)(p / RatePoly<Q>(Q(0))), UndefinedQuantity);
 }
 
-TEST(RatePolySame, SamePolynomialIgnoresZeroTermsAndComparesEveryOtherCoefficient) {
+TEST(RatePolyDiffering, DifferingTermsIgnoreZeroTermsAndKeepEachSidesCoefficient) {
   using R = Rational;
   const Monomial w1{RateVariable{1, RateVariable::Omega}.id()};
   const Monomial w1w2{RateVariable{1, RateVariable::Omega}.id(), RateVariable{2, RateVariable::Omega}.id()};
   const Monomial wd2{RateVariable{2, RateVariable::OmegaDot}.id()};
+  const auto same = [](const RatePoly<R>& x, const RatePoly<R>& y) {
+    const auto d = differing_terms(x, y);
+    return d.first.terms().empty() && d.second.terms().empty();
+  };
   RatePoly<R> a, b;
   a.add(w1, R(3));
   a.add(w1w2, R(0));  // cancelled on one side only
   a.add(wd2, R(1) / 7);
   b.add(wd2, R(2) / 14);
   b.add(w1, R(3));
-  EXPECT_TRUE(same_polynomial(a, b));
-  EXPECT_TRUE(same_polynomial(b, a));
+  EXPECT_TRUE(same(a, b));
+  EXPECT_TRUE(same(b, a));
   RatePoly<R> c = b;
-  c.add(w1w2, R(1) / 1000000);  // one more nonzero term
-  EXPECT_FALSE(same_polynomial(a, c));
-  EXPECT_FALSE(same_polynomial(c, a));
+  c.add(w1w2, R(1) / 1000000);  // one more nonzero term: in c's part only
+  auto ac = differing_terms(a, c);
+  EXPECT_TRUE(ac.first.terms().empty());
+  ASSERT_EQ(ac.second.terms().size(), 1u);
+  EXPECT_TRUE(ac.second.terms()[0].first == w1w2);
+  EXPECT_FALSE(same(c, a));
   RatePoly<R> d;
   d.add(w1, R(3));
-  d.add(wd2, R(1) / 8);  // one coefficient differs
-  EXPECT_FALSE(same_polynomial(a, d));
+  d.add(wd2, R(1) / 8);  // one coefficient differs: in both parts, each with its own
+  const auto ad = differing_terms(a, d);
+  ASSERT_EQ(ad.first.terms().size(), 1u);
+  ASSERT_EQ(ad.second.terms().size(), 1u);
+  EXPECT_EQ(ad.first.terms()[0].second, R(1) / 7);
+  EXPECT_EQ(ad.second.terms()[0].second, R(1) / 8);
+  // a - d = a' - d' at any rates.
+  const std::vector<R> w{R(2), R(-3)}, wd{R(5), R(1) / 3};
+  EXPECT_EQ(a.evaluate(w, wd) - d.evaluate(w, wd), ad.first.evaluate(w, wd) - ad.second.evaluate(w, wd));
   RatePoly<R> zero, zeros;
   zeros.add(w1, R(0));
   zeros.add(Monomial{}, R(0));
-  EXPECT_TRUE(same_polynomial(zero, zeros));
-  EXPECT_FALSE(same_polynomial(zero, a));
+  EXPECT_TRUE(same(zero, zeros));
+  EXPECT_FALSE(same(zero, a));
 }
 
 }  // namespace

@@ -22,7 +22,11 @@ namespace linkproof {
 enum class Evidence {
   All,       ///< every comparison with its evidence as text (lhs, rhs, residual, tolerance): reports
   Headline,  ///< each claim's verdict and its headline comparison only; instances and terms stay
-             ///< empty (sweeps: the text of the other comparisons is never printed)
+             ///< empty
+  Examples,  ///< each claim's verdict; the headline only where a sweep keeps it as an example
+             ///< (the verdict is unexpected, or disproves an erratum reading): sweeps. A value that
+             ///< no comparison's verdict needs is then never computed (an exact claim whose sides
+             ///< are the same polynomial holds at any rates: its value at the rates is not made)
 };
 
 struct ClaimOutcome {
