@@ -61,8 +61,8 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
         for (const auto& c : *group) v = combine(v, verdicts.emplace_back(judge_verdict(c)));
       out.verdict = v;
       // A sweep keeps a headline only as an example (sweep_case.cpp).
-      if (evidence == Evidence::Examples && !is_unexpected(claim.info.expected, v) && !is_disproof(claim.info.expected, v))
-        return out;
+      const Expectation expected = claim.info.expected;
+      if (evidence == Evidence::Examples && !is_unexpected(expected, v) && !is_disproof(expected, v)) return out;
       const auto first = std::find(verdicts.begin(), verdicts.end(), v) - verdicts.begin();
       const size_t k = first == static_cast<std::ptrdiff_t>(verdicts.size()) ? 0 : static_cast<size_t>(first);
       const Comparison<T>* headline =

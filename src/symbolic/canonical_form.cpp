@@ -198,7 +198,8 @@ CanonicalForm::Split CanonicalForm::split(const ex& e) {
 namespace {
 
 /// The primitive part p of a factor, raised to k, as (base, exponent) pairs.
-void append_factors(const CanonicalForm& form, CanonicalForm::Id p, int k, std::vector<std::pair<CanonicalForm::Id, int>>& out) {
+void append_factors(const CanonicalForm& form, CanonicalForm::Id p, int k,
+                    std::vector<std::pair<CanonicalForm::Id, int>>& out) {
   if (p == CanonicalForm::one) return;
   if (form.node(p).kind == CanonicalForm::Kind::Product) {
     for (const auto& [b, x] : form.node(p).factors) out.emplace_back(b, x * k);

@@ -26,58 +26,50 @@ void expect_same_headline(const ComparisonOutcome& a, const ComparisonOutcome& b
   EXPECT_EQ(reason_text(a), reason_text(b)) << where;
 }
 
-TEST(CheckEvidence, HeadlineEvidenceGivesTheVerdictsAndHeadlinesOfFullEvidence) {
-  const std::uint64_t seed = 13;
+/// Checks random polygons (n = 4..8, four each, from `seed`) in exact and double arithmetic with
+/// full evidence and with `evidence`, and calls `compare(full, other, where)` for every claim.
+template <class Compare>
+void for_each_claim_both_ways(std::uint64_t seed, Evidence evidence, Compare compare) {
   GroundTruthEngine engine;
   for (Arithmetic a : {Arithmetic::Exact, Arithmetic::Double}) {
     for (int n = 4; n <= 8; ++n) {
       for (int i = 0; i < 4; ++i) {
         const auto rc = generate_random_polygon(seed, n, i);
         const PolygonCheck all = check_polygon(engine, dijksman1966::catalogue(), "t", rc.polygon, rc.rates, a);
-        const PolygonCheck head =
-            check_polygon(engine, dijksman1966::catalogue(), "t", rc.polygon, rc.rates, a, Evidence::Headline);
-        ASSERT_EQ(all.claims.size(), head.claims.size());
+        const PolygonCheck other =
+            check_polygon(engine, dijksman1966::catalogue(), "t", rc.polygon, rc.rates, a, evidence);
+        ASSERT_EQ(all.claims.size(), other.claims.size());
         for (size_t k = 0; k < all.claims.size(); ++k) {
-          const std::string where = std::string(to_string(a)) + " seed 13 n " + std::to_string(n) + " index " +
-                                    std::to_string(i) + " " + all.claims[k].info.id;
-          EXPECT_EQ(all.claims[k].verdict, head.claims[k].verdict) << where;
-          expect_same_headline(all.claims[k].headline, head.claims[k].headline, where);
-          EXPECT_TRUE(head.claims[k].terms.empty() && head.claims[k].instances.empty()) << where;
+          const std::string where = std::string(to_string(a)) + " seed " + std::to_string(seed) + " n " +
+                                    std::to_string(n) + " index " + std::to_string(i) + " " + all.claims[k].info.id;
+          EXPECT_EQ(all.claims[k].verdict, other.claims[k].verdict) << where;
+          EXPECT_TRUE(other.claims[k].terms.empty() && other.claims[k].instances.empty()) << where;
+          compare(all.claims[k], other.claims[k], where);
         }
       }
     }
   }
 }
 
+TEST(CheckEvidence, HeadlineEvidenceGivesTheVerdictsAndHeadlinesOfFullEvidence) {
+  for_each_claim_both_ways(13, Evidence::Headline,
+                           [](const ClaimOutcome& all, const ClaimOutcome& head, const std::string& where) {
+                             expect_same_headline(all.headline, head.headline, where);
+                           });
+}
+
 TEST(CheckEvidence, ExamplesEvidenceGivesTheVerdictsAndTheHeadlinesASweepKeeps) {
-  const std::uint64_t seed = 17;
-  GroundTruthEngine engine;
   int kept = 0, left = 0;
-  for (Arithmetic a : {Arithmetic::Exact, Arithmetic::Double}) {
-    for (int n = 4; n <= 8; ++n) {
-      for (int i = 0; i < 4; ++i) {
-        const auto rc = generate_random_polygon(seed, n, i);
-        const PolygonCheck all = check_polygon(engine, dijksman1966::catalogue(), "t", rc.polygon, rc.rates, a);
-        const PolygonCheck ex =
-            check_polygon(engine, dijksman1966::catalogue(), "t", rc.polygon, rc.rates, a, Evidence::Examples);
-        ASSERT_EQ(all.claims.size(), ex.claims.size());
-        for (size_t k = 0; k < all.claims.size(); ++k) {
-          const ClaimOutcome& o = all.claims[k];
-          const std::string where = std::string(to_string(a)) + " seed 17 n " + std::to_string(n) + " index " +
-                                    std::to_string(i) + " " + o.info.id;
-          EXPECT_EQ(o.verdict, ex.claims[k].verdict) << where;
-          EXPECT_TRUE(ex.claims[k].terms.empty() && ex.claims[k].instances.empty()) << where;
-          if (is_unexpected(o.info.expected, o.verdict) || is_disproof(o.info.expected, o.verdict)) {
-            expect_same_headline(o.headline, ex.claims[k].headline, where);
-            ++kept;
-          } else {
-            EXPECT_TRUE(ex.claims[k].headline.label.empty()) << where;
-            ++left;
-          }
-        }
-      }
+  const auto compare = [&](const ClaimOutcome& o, const ClaimOutcome& ex, const std::string& where) {
+    if (is_unexpected(o.info.expected, o.verdict) || is_disproof(o.info.expected, o.verdict)) {
+      expect_same_headline(o.headline, ex.headline, where);
+      ++kept;
+    } else {
+      EXPECT_TRUE(ex.headline.label.empty()) << where;
+      ++left;
     }
-  }
+  };
+  for_each_claim_both_ways(17, Evidence::Examples, compare);
   std::printf("seed 17: %d headlines kept (unexpected verdicts or disproofs), %d left unmade\n", kept, left);
   EXPECT_GT(kept, 100);
   EXPECT_GT(left, 100);
@@ -95,7 +87,8 @@ TEST(CheckEvidence, AnExactTotalMadeOnDemandIsJudgedAsTheEagerOne) {
       later.values_on_demand = true;
       for (const Claim& claim : dijksman1966::catalogue()) {
         if (!claim.info.applies_to(n)) continue;
-        const std::string where = "seed 19 n " + std::to_string(n) + " index " + std::to_string(i) + " " + claim.info.id;
+        const std::string where =
+            "seed 19 n " + std::to_string(n) + " index " + std::to_string(i) + " " + claim.info.id;
         ClaimSides<InlineRational> a, b;
         try {
           a = claim.function<InlineRational>()(now);
