@@ -184,9 +184,8 @@ ComparisonOutcome judge(const Comparison<T>& c) {
   if constexpr (ScalarTraits<T>::is_exact) {
     if (c.same_value) {  // both sides one polynomial: their common value, made now
       Comparison<T> made = c;
-      const T value = c.same_value();
-      made.lhs = value;
-      made.rhs = value;
+      made.lhs = Defined<T>::attempt(c.same_value);
+      made.rhs = made.lhs;
       made.same_value = nullptr;
       return judge_exact(made);
     }

@@ -107,9 +107,8 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
       Comparison<T> total{label, Defined<T>::pending(), Defined<T>::pending()};
       total.same_value = [fewer, w, wd] { return fewer->total(w, wd); };
       if (!c.values_on_demand) {
-        const T value = total.same_value();
-        total.lhs = value;
-        total.rhs = value;
+        total.lhs = Defined<T>::attempt(total.same_value);
+        total.rhs = total.lhs;
         total.same_value = nullptr;
       }
       s.instances.push_back(std::move(total));

@@ -24,11 +24,7 @@ std::string numeric_text(const numeric& x) {
 
 }  // namespace
 
-CanonicalForm::CanonicalForm(const std::vector<ex>& inputs) {
-  Node unit;
-  unit.key = text_hash("1");
-  nodes_.push_back(std::move(unit));
-  interned_.emplace("1", one);
+CanonicalForm::CanonicalForm(const std::vector<ex>& inputs) : CanonicalForm(std::vector<std::string>{}) {
   for (size_t i = 0; i < inputs.size(); ++i) {
     if (!is_a<symbol>(inputs[i])) throw InternalError("canonical form: input " + ex_text(inputs[i]) + " is not a symbol");
     input_index_[inputs[i]] = static_cast<std::uint32_t>(i);
