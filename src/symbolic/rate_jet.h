@@ -62,10 +62,34 @@ struct RateJet {
 template <class T>
 class TapeJetEvaluator {
  public:
-  TapeJetEvaluator(const Tape& tape, size_t first_rate) : tape_(&tape), first_rate_(first_rate), registers_(tape.size()) {
+  TapeJetEvaluator(const Tape& tape, size_t first_rate)
+      : tape_(&tape), first_rate_(first_rate), registers_(tape.size()), last_use_(tape.size()) {
     LINKPROOF_ASSERT(first_rate <= tape.input_count(), "jet: rate inputs out of range");
     constants_.reserve(tape.constants().size());
     for (const auto& c : tape.constants()) constants_.push_back(from_rational<T>(c));
+    // The last instruction that reads each register (outputs: past the end). A jet of the
+    // solution's quadratic part holds O(m^2) terms; at n = 1000 keeping every register to the
+    // end held hundreds of MB.
+    const auto& code = tape.code();
+    const auto& ops = tape.operands();
+    for (size_t i = 0; i < code.size(); ++i) {
+      last_use_[i] = i;
+      const Tape::Instruction& in = code[i];
+      switch (in.op) {
+        case Tape::Op::Sum:
+        case Tape::Op::Product:
+          for (std::uint32_t t = 0; t < in.b; ++t) last_use_[ops[in.a + t]] = i;
+          break;
+        case Tape::Op::Quotient:
+          last_use_[in.a] = i;
+          last_use_[in.b] = i;
+          break;
+        case Tape::Op::Power: last_use_[in.a] = i; break;
+        case Tape::Op::Input:
+        case Tape::Op::Constant: break;
+      }
+    }
+    for (auto o : tape.outputs()) last_use_[o] = code.size();
   }
 
   /// Every output as a jet. `numbers` holds the first_rate numeric inputs.
@@ -109,6 +133,7 @@ class TapeJetEvaluator {
           break;
         }
       }
+      release_operands(in, i);
     }
     std::vector<RateJet<T>> out;
     out.reserve(tape_->outputs().size());
@@ -117,6 +142,27 @@ class TapeJetEvaluator {
   }
 
  private:
+  /// Frees the registers that instruction i read for the last time.
+  void release_operands(const Tape::Instruction& in, size_t i) {
+    const auto& ops = tape_->operands();
+    const auto release = [&](std::uint32_t k) {
+      if (last_use_[k] == i) registers_[k] = RateJet<T>{};
+    };
+    switch (in.op) {
+      case Tape::Op::Sum:
+      case Tape::Op::Product:
+        for (std::uint32_t t = 0; t < in.b; ++t) release(ops[in.a + t]);
+        break;
+      case Tape::Op::Quotient:
+        release(in.a);
+        release(in.b);
+        break;
+      case Tape::Op::Power: release(in.a); break;
+      case Tape::Op::Input:
+      case Tape::Op::Constant: break;
+    }
+  }
+
   /// Merges (key, value) pairs given in operand order: equal keys are added in that order, so
   /// floating-point results depend only on the tape.
   template <class K>
@@ -207,6 +253,7 @@ class TapeJetEvaluator {
   size_t first_rate_;
   std::vector<T> constants_;
   std::vector<RateJet<T>> registers_;
+  std::vector<size_t> last_use_;  ///< per register: the last instruction that reads it
 };
 
 }  // namespace linkproof

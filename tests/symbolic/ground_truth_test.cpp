@@ -99,6 +99,34 @@ TEST(GroundTruth, ForwardModeTermsEqualTheSymbolicDerivativesOnRandomPolygons) {
   }
 }
 
+// The jet evaluator frees each register after its last read (rate_jet.h); reused, it remakes
+// them: every output of a reused evaluator is that of a fresh one, on one polygon after another.
+TEST(GroundTruth, AReusedJetEvaluatorGivesWhatAFreshOneGives) {
+  const std::uint64_t seed = 20261128;
+  GroundTruthEngine engine;
+  for (int n : {4, 7, 12}) {
+    const Tape& tape = engine.derivation(n).motion;
+    const size_t numbers = 2 * static_cast<size_t>(n - 1);
+    TapeJetEvaluator<Rational> reused(tape, numbers);
+    for (int i = 0; i < 3; ++i) {
+      const auto rc = generate_random_polygon(seed, n, i);
+      std::vector<Rational> in;
+      for (int j = 1; j <= n - 1; ++j) in.push_back(rc.polygon.side(j).x);
+      for (int j = 1; j <= n - 1; ++j) in.push_back(rc.polygon.side(j).y);
+      const auto a = reused(in);
+      const auto b = TapeJetEvaluator<Rational>(tape, numbers)(in);
+      ASSERT_EQ(a.size(), b.size());
+      for (size_t k = 0; k < a.size(); ++k) {
+        const std::string where = "seed 20261128 n " + std::to_string(n) + " index " + std::to_string(i);
+        EXPECT_EQ(a[k].constant, b[k].constant) << where;
+        EXPECT_EQ(a[k].linear, b[k].linear) << where;
+        EXPECT_EQ(a[k].quadratic, b[k].quadratic) << where;
+        EXPECT_FALSE(a[k].quadratic.empty() && a[k].linear.empty()) << where;
+      }
+    }
+  }
+}
+
 TEST(GroundTruth, ForwardModeTermsAreUndefinedAtTheDeadCentre) {
   // r_{n-2} parallel to r_{n-1}: D = 0.
   const Polygon<Rational> p({{0, 0}, {0, 3}, {1, 5}, {2, 4}, {4, 4}, {6, 4}});
