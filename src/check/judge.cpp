@@ -184,9 +184,7 @@ ComparisonOutcome judge(const Comparison<T>& c) {
   if constexpr (ScalarTraits<T>::is_exact) {
     if (c.same_value) {  // both sides one polynomial: their common value, made now
       Comparison<T> made = c;
-      made.lhs = Defined<T>::attempt(c.same_value);
-      made.rhs = made.lhs;
-      made.same_value = nullptr;
+      made.make_same_value();
       return judge_exact(made);
     }
     return judge_exact(c);

@@ -49,6 +49,13 @@ struct Comparison {
   /// this makes their common value, when the comparison is judged with its text; its verdict
   /// alone (judge_verdict) needs no value. Empty otherwise.
   std::function<T()> same_value{};
+  /// Makes lhs and rhs from same_value (if set), as an eager comparison would have them.
+  void make_same_value() {
+    if (!same_value) return;
+    lhs = Defined<T>::attempt(same_value);
+    rhs = lhs;
+    same_value = nullptr;
+  }
   /// "total", "j=1", "omega_dot[1]", "j=2: omega[1]*omega[2]", ...
   std::string full_label() const { return monomial ? label_head + monomial_label(*monomial) : label_head; }
 };

@@ -94,23 +94,20 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
     // where those are fewer terms than the rhs has (a side's value at n = 1000 is a sum of
     // 500,000 products of growing rationals). The term-by-term comparisons below still compare
     // every coefficient.
-    std::optional<std::pair<RatePoly<T>, RatePoly<T>>> differing;
+    std::optional<std::pair<RatePoly<T>, RatePoly<T>>> differing;  // set where it is the cheaper route
+    bool same = false;
     if constexpr (GrowingExactNumber<T>)
       if (l.undefined_inputs.empty() && r.undefined_inputs.empty() && l.poly.has_value() && r.poly.has_value()) {
         auto d = differing_terms(l.poly.get(), r.poly.get());
-        if (d.first.terms().size() + d.second.terms().size() < r.poly.get().terms().size() ||
-            (d.first.terms().empty() && d.second.terms().empty()))
-          differing = std::move(d);
+        const size_t count = d.first.terms().size() + d.second.terms().size();
+        same = count == 0;
+        if (count < r.poly.get().terms().size()) differing = std::move(d);
       }
-    if (differing && differing->first.terms().empty() && differing->second.terms().empty()) {
+    if (same) {
       const auto fewer = r.poly.get().terms().size() < l.poly.get().terms().size() ? shared_rhs : shared_lhs;
       Comparison<T> total{label, Defined<T>::pending(), Defined<T>::pending()};
       total.same_value = [fewer, w, wd] { return fewer->total(w, wd); };
-      if (!c.values_on_demand) {
-        total.lhs = Defined<T>::attempt(total.same_value);
-        total.rhs = total.lhs;
-        total.same_value = nullptr;
-      }
+      if (!c.values_on_demand) total.make_same_value();
       s.instances.push_back(std::move(total));
     } else {
       std::optional<T> lhs_total;

@@ -71,23 +71,9 @@ class TapeJetEvaluator {
     // solution's quadratic part holds O(m^2) terms; at n = 1000 keeping every register to the
     // end held hundreds of MB.
     const auto& code = tape.code();
-    const auto& ops = tape.operands();
     for (size_t i = 0; i < code.size(); ++i) {
       last_use_[i] = i;
-      const Tape::Instruction& in = code[i];
-      switch (in.op) {
-        case Tape::Op::Sum:
-        case Tape::Op::Product:
-          for (std::uint32_t t = 0; t < in.b; ++t) last_use_[ops[in.a + t]] = i;
-          break;
-        case Tape::Op::Quotient:
-          last_use_[in.a] = i;
-          last_use_[in.b] = i;
-          break;
-        case Tape::Op::Power: last_use_[in.a] = i; break;
-        case Tape::Op::Input:
-        case Tape::Op::Constant: break;
-      }
+      tape.for_each_operand(code[i], [&](std::uint32_t k) { last_use_[k] = i; });
     }
     for (auto o : tape.outputs()) last_use_[o] = code.size();
   }
@@ -144,23 +130,9 @@ class TapeJetEvaluator {
  private:
   /// Frees the registers that instruction i read for the last time.
   void release_operands(const Tape::Instruction& in, size_t i) {
-    const auto& ops = tape_->operands();
-    const auto release = [&](std::uint32_t k) {
+    tape_->for_each_operand(in, [&](std::uint32_t k) {
       if (last_use_[k] == i) registers_[k] = RateJet<T>{};
-    };
-    switch (in.op) {
-      case Tape::Op::Sum:
-      case Tape::Op::Product:
-        for (std::uint32_t t = 0; t < in.b; ++t) release(ops[in.a + t]);
-        break;
-      case Tape::Op::Quotient:
-        release(in.a);
-        release(in.b);
-        break;
-      case Tape::Op::Power: release(in.a); break;
-      case Tape::Op::Input:
-      case Tape::Op::Constant: break;
-    }
+    });
   }
 
   /// Merges (key, value) pairs given in operand order: equal keys are added in that order, so

@@ -54,6 +54,23 @@ class Tape {
   const std::vector<std::uint32_t>& operands() const { return operands_; }
   const std::vector<Rational>& constants() const { return constants_; }
   const std::vector<std::uint32_t>& outputs() const { return outputs_; }
+  /// f(k) for every register k that instruction `in` reads.
+  template <class F>
+  void for_each_operand(const Instruction& in, F f) const {
+    switch (in.op) {
+      case Op::Sum:
+      case Op::Product:
+        for (std::uint32_t t = 0; t < in.b; ++t) f(operands_[in.a + t]);
+        break;
+      case Op::Quotient:
+        f(in.a);
+        f(in.b);
+        break;
+      case Op::Power: f(in.a); break;
+      case Op::Input:
+      case Op::Constant: break;
+    }
+  }
   const std::string& denominator_name() const { return denominator_name_; }
 
  private:
