@@ -44,7 +44,7 @@ Rational InlineRational::word_rational() const {
   // again in its bignum gcd (12 % of an exact pentagon check, which reads every comparison's
   // values, perf).
   const std::uint64_t magnitude = num_ < 0 ? 0 - static_cast<std::uint64_t>(num_) : static_cast<std::uint64_t>(num_);
-  const auto g = static_cast<std::int64_t>(binary_gcd(magnitude, static_cast<std::uint64_t>(den_)));
+  const auto g = static_cast<std::int64_t>(word_gcd(magnitude, static_cast<std::uint64_t>(den_)));
   return cln::I_I_to_RA(cln::cl_I(static_cast<long>(num_ / g)), cln::cl_I(static_cast<long>(den_ / g)));
 }
 

@@ -7,7 +7,7 @@
 // Here the word path is inline and needs no gcd while its results fit: a sum or product forms
 // numerator and denominator exactly in 128 bits (each part of an operand is below 2^63) and
 // keeps them as they are when both fit in words. Only a result that does not fit is reduced
-// (one binary gcd of the 128-bit parts), and only one whose reduced form still does not fit
+// (one gcd of the 128-bit parts, core/word_gcd.h), and only one whose reduced form still does not fit
 // goes to CLN. A value is reduced for good when it is read as a cl_RA (printing, evidence).
 //
 // Invariant: a value is in the word form exactly when its reduced form fits (|numerator| and
@@ -20,7 +20,6 @@
 
 #include <cln/rational.h>
 
-#include <bit>
 #include <compare>
 #include <cstdint>
 #include <utility>
@@ -28,6 +27,7 @@
 
 #include "linkproof/core/exact.h"
 #include "core/scalar.h"
+#include "core/word_gcd.h"
 #include "linkproof/core/result_number.h"
 
 namespace linkproof {
@@ -141,7 +141,7 @@ class InlineRational {
   static InlineRational reduced(Int128 n, Int128 d) {
     InlineRational r;
     if (r.store(n, d)) return r;
-    const Int128 g = static_cast<Int128>(gcd(n < 0 ? -static_cast<UInt128>(n) : static_cast<UInt128>(n), static_cast<UInt128>(d)));
+    const Int128 g = static_cast<Int128>(wide_gcd(n < 0 ? -static_cast<UInt128>(n) : static_cast<UInt128>(n), static_cast<UInt128>(d)));
     if (r.store(n / g, d / g)) return r;
     return big_from_reduced(n / g, d / g);
   }
@@ -157,36 +157,6 @@ class InlineRational {
   /// (an/ad)(bn/bd) with ad, bd > 0: |an bn| < 2^126, exact in 128 bits.
   static InlineRational word_product(std::int64_t an, std::int64_t ad, std::int64_t bn, std::int64_t bd) {
     return reduced(static_cast<Int128>(an) * bn, static_cast<Int128>(ad) * bd);
-  }
-
-  static int trailing_zeros(std::uint64_t x) { return std::countr_zero(x); }
-  static int trailing_zeros(UInt128 x) {
-    const auto low = static_cast<std::uint64_t>(x);
-    return low != 0 ? std::countr_zero(low) : 64 + std::countr_zero(static_cast<std::uint64_t>(x >> 64));
-  }
-  /// gcd(u, v) for v >= 1: in word operations when both fit in 64 bits.
-  static UInt128 gcd(UInt128 u, UInt128 v) {
-    if (u >> 64 == 0 && v >> 64 == 0) return binary_gcd(static_cast<std::uint64_t>(u), static_cast<std::uint64_t>(v));
-    return binary_gcd(u, v);
-  }
-  /// Stein's binary gcd (shifts and subtractions, no divisions).
-  template <class U>
-  static U binary_gcd(U u, U v) {
-    if (u == 1 || v == 1) return 1;
-    if (u == 0) return v;
-    if (v == 0) return u;
-    const int shift = trailing_zeros(u | v);
-    u >>= trailing_zeros(u);
-    do {
-      v >>= trailing_zeros(v);
-      if (u > v) std::swap(u, v);
-      v -= u;
-      // Both below 2^64 (the 128-bit loop shrinks them): finish in word operations.
-      if constexpr (sizeof(U) > sizeof(std::uint64_t)) {
-        if ((u | v) >> 64 == 0) return static_cast<U>(binary_gcd(static_cast<std::uint64_t>(u), static_cast<std::uint64_t>(v))) << shift;
-      }
-    } while (v != 0);
-    return u << shift;
   }
 
   // Word form when den_ > 0 (num_ / den_, not necessarily reduced, |num_| <= 2^63 - 1); else
