@@ -28,6 +28,7 @@
 #include "claims/polygon_context.h"
 #include "claims/rate_poly.h"
 #include "claims/rate_value.h"
+#include "claims/summand_program.h"
 #include "claims/vocabulary.h"
 #include "core/symbolic_scalar.h"
 
@@ -94,6 +95,10 @@ class ClaimEvaluator {
   struct Undefined {
     std::string quantity, reason;
   };
+
+  /// Walks every sum's body, also where it has a compiled program (claims/summand_program.h): the
+  /// reference route SummandProgram.* compares the programs with.
+  void set_walk_only(bool on) { walk_only_ = on; }
   /// Left-out terms, keyed by the inputs of the term ({j} for sum_j, {j, l} for a pair): only
   /// monomials with rates of all of them are affected.
   const std::map<std::vector<int>, Undefined>& undefined_inputs() const { return undefined_inputs_; }
@@ -455,13 +460,14 @@ class ClaimEvaluator {
   RatePoly<T> sum(const Node& node, const IndexBindings& b) {
     const int body = node.children[0];
     const int m = c_.inputs();
+    const SummandProgram* program = prepared_program(node);
     RatePoly<T> total;
     if (node.evaluation == Evaluation::SumJ) {
       for (int j = 1; j <= m; ++j) {
         IndexBindings inner = b;
         inner.j = j;
         Scalar t;
-        if (!summand(body, inner, t, {j})) continue;
+        if (!summand(program, body, inner, t, {j})) continue;
         check_terms(t, [j](const Monomial& mono) { return involves_input(mono, j); }, [](const Monomial& mono) {
           return "sum_j(...) has a term without a rate of j (" + monomial_label(mono) + "): its total depends on n";
         });
@@ -481,7 +487,7 @@ class ClaimEvaluator {
         inner.j = j;
         inner.l = l;
         Scalar t;
-        if (!summand(body, inner, t, {j, l})) continue;
+        if (!summand(program, body, inner, t, {j, l})) continue;
         check_terms(
             t, [j, l](const Monomial& mono) { return involves_input(mono, j) && involves_input(mono, l); },
             [&](const Monomial& mono) {
@@ -510,13 +516,14 @@ class ClaimEvaluator {
 
   /// Evaluates one term of a sum; in partial mode an undefined quantity records the term's
   /// inputs as undefined and returns false.
-  bool summand(int body, const IndexBindings& b, Scalar& out, std::initializer_list<int> inputs) {
+  bool summand(const SummandProgram* program, int body, const IndexBindings& b, Scalar& out,
+               std::initializer_list<int> inputs) {
     if (!partial_) {
-      out = scalar_of(body, b);
+      out = program ? run(*program, b) : scalar_of(body, b);
       return true;
     }
     try {
-      out = scalar_of(body, b);
+      out = program ? run(*program, b) : scalar_of(body, b);
       return true;
     } catch (const UndefinedQuantity& u) {
       std::vector<int> key(inputs);
@@ -525,6 +532,118 @@ class ClaimEvaluator {
       return false;
     }
   }
+
+  /// The compiled program of a sum's body, its constants placed in their registers (they are
+  /// the same at every j and l) and its leaves' values forgotten; null where the body is walked.
+  const SummandProgram* prepared_program(const Node& sum_node) {
+    if (walk_only_ || !sum_node.summand) return nullptr;
+    const SummandProgram& p = *sum_node.summand;
+    if (registers_.size() < p.code.size()) registers_.resize(p.code.size());
+    const size_t slots = p.code.size() * static_cast<size_t>(c_.n + 1);
+    if (leaf_values_.size() < slots) leaf_values_.resize(slots);
+    leaf_known_.assign(slots, 0);
+    for (size_t i = 0; i < p.code.size(); ++i) {
+      const SummandProgram::Instruction& in = p.code[i];
+      if (in.op == SummandProgram::Op::Constant) registers_[i] = {number(node(in.node)), {}};
+      else if (in.op == SummandProgram::Op::One) registers_[i] = {from_int<T>(1), {}};
+    }
+    return &p;
+  }
+
+  /// The slot of leaf instruction i's value at bindings b in leaf_values_ (-1: none, where the
+  /// index is out of range and its evaluation throws). A leaf's value depends only on the value
+  /// k of its index (a global's on nothing), so the walk's evaluation at a k is made once per
+  /// sum and reused: the same value, and its index check and locality note were made then, at
+  /// the walk's first evaluation of it. A leaf that throws is not kept, so it throws again.
+  std::ptrdiff_t leaf_slot(size_t i, int node_id, const IndexBindings& b) const {
+    const Node& n = node(node_id);
+    const int k = n.index < 0 ? 0 : program_->indexes[static_cast<size_t>(n.index)].at(c_.n, b.j, b.l);
+    if (k < 0 || k > c_.n) return -1;
+    return static_cast<std::ptrdiff_t>(i * static_cast<size_t>(c_.n + 1) + static_cast<size_t>(k));
+  }
+
+  /// One term of a sum by its body's program at bindings b (see claims/summand_program.h): the
+  /// value the walk gives, by the same operations on the coefficients in the same order.
+  Scalar run(const SummandProgram& p, const IndexBindings& b) {
+    using SOp = SummandProgram::Op;
+    const auto one_term = [](const Scalar& v) -> Register {
+      if (!v.is_term()) throw InternalError("summand program: a leaf's value is not one term");
+      return {v.coefficient(), v.monomial()};
+    };
+    for (size_t i = 0; i < p.code.size(); ++i) {
+      const SummandProgram::Instruction& in = p.code[i];
+      Register& r = registers_[i];
+      switch (in.op) {
+        case SOp::Leaf: {
+          const std::ptrdiff_t slot = leaf_slot(i, in.node, b);
+          if (slot >= 0 && leaf_known_[static_cast<size_t>(slot)]) {
+            r = leaf_values_[static_cast<size_t>(slot)];
+            break;
+          }
+          r = one_term(scalar_of(in.node, b));
+          if (slot >= 0) {
+            leaf_values_[static_cast<size_t>(slot)] = r;
+            leaf_known_[static_cast<size_t>(slot)] = 1;
+          }
+          break;
+        }
+        case SOp::LeafVector: {
+          // x in slot i's row, y in row i + 1's (the Skip's).
+          const std::ptrdiff_t slot = leaf_slot(i, in.node, b);
+          const auto y_slot = static_cast<size_t>(slot + c_.n + 1);
+          if (slot >= 0 && leaf_known_[static_cast<size_t>(slot)]) {
+            r = leaf_values_[static_cast<size_t>(slot)];
+            registers_[i + 1] = leaf_values_[y_slot];
+            break;
+          }
+          const Vector v = vector_of(in.node, b);
+          r = one_term(v.x);
+          registers_[i + 1] = one_term(v.y);
+          if (slot >= 0) {
+            leaf_values_[static_cast<size_t>(slot)] = r;
+            leaf_values_[y_slot] = registers_[i + 1];
+            leaf_known_[static_cast<size_t>(slot)] = 1;
+          }
+          break;
+        }
+        case SOp::Skip:
+        case SOp::Constant:
+        case SOp::One: break;
+        case SOp::Add: {
+          const Register &x = registers_[static_cast<size_t>(in.a)], &y = registers_[static_cast<size_t>(in.b)];
+          if (x.m != y.m) throw InternalError("summand program: a sum of terms of two monomials compiled as one term");
+          r.c = x.c + y.c;
+          r.m = x.m;
+          break;
+        }
+        case SOp::Multiply: {
+          const Register &x = registers_[static_cast<size_t>(in.a)], &y = registers_[static_cast<size_t>(in.b)];
+          r.c = x.c * y.c;
+          r.m = Monomial::product(x.m, y.m);
+          break;
+        }
+        case SOp::Negate: {
+          const Register& x = registers_[static_cast<size_t>(in.a)];
+          r.c = -x.c;
+          r.m = x.m;
+          break;
+        }
+      }
+    }
+    const Register& first = registers_[static_cast<size_t>(p.terms[0])];
+    if (p.terms.size() == 1) return Scalar::term(first.c, first.m);
+    if (first.m == registers_[static_cast<size_t>(p.terms[1])].m)
+      throw InternalError("summand program: terms of one monomial compiled as a polynomial");
+    RatePoly<T> poly;
+    for (const int t : p.terms) poly.add(registers_[static_cast<size_t>(t)].m, registers_[static_cast<size_t>(t)].c);
+    return Scalar::poly(std::move(poly));
+  }
+
+  /// A register of a summand program: a one-term value.
+  struct Register {
+    T c;
+    Monomial m;
+  };
 
   const PolygonContext<T>& c_;
   ClaimReading reading_;
@@ -537,6 +656,10 @@ class ClaimEvaluator {
   /// several expressions: both sides of a claim).
   std::map<const ClaimProgram*, std::vector<char>> noted_;
   std::vector<char>* noted_now_ = nullptr;
+  bool walk_only_ = false;
+  std::vector<Register> registers_;  ///< of the summand program being run
+  std::vector<Register> leaf_values_;  ///< its leaves' values in this sum (leaf_slot)
+  std::vector<char> leaf_known_;
 };
 
 }  // namespace linkproof

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "claims/claim_expression.h"
+#include "claims/summand_program.h"
 #include "linkproof/core/error.h"
 #include "core/symbolic_scalar.h"
 
@@ -182,6 +183,7 @@ class Compiler {
       if (node(body).is_vector) throw error("a vector where a number is expected: " + text(a0));
       ClaimProgram::Node n = word_node(Op::IndexSum, w);
       n.children = {body};
+      if (std::optional<SummandProgram> s = compile_summand(p_, body)) n.summand = std::make_shared<const SummandProgram>(std::move(*s));
       return add(std::move(n));
     }
     if (w.is_indexed()) {

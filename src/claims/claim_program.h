@@ -23,12 +23,15 @@
 #include <ginac/ginac.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "claims/vocabulary.h"
 
 namespace linkproof {
+
+struct SummandProgram;
 
 struct ClaimProgram {
   enum class Op {
@@ -71,6 +74,9 @@ struct ClaimProgram {
     long integer = 0;
     cln::cl_RA rational;              ///< Constant, Scale
     std::vector<int> children;        ///< into nodes, in evaluation order
+    /// IndexSum: its body compiled to straight-line code (claims/summand_program.h); null where
+    /// the body is walked.
+    std::shared_ptr<const SummandProgram> summand;
   };
 
   std::vector<Node> nodes;
