@@ -300,7 +300,7 @@ class RatePoly {
     if (terms_.size() <= 16) {
       for (size_t i = 1; i < terms_.size(); ++i)  // insertion sort: no buffer for small polynomials
         for (size_t k = i; k > 0 && by_monomial(terms_[k], terms_[k - 1]); --k) std::swap(terms_[k], terms_[k - 1]);
-    } else {
+    } else if (!merge_sorted_runs(by_monomial)) {
       stable_sort_by_key<2>(terms_, [](const Term& t) { return t.first.key(); });
     }
     size_t out = 0;
@@ -311,6 +311,28 @@ class RatePoly {
     terms_.resize(terms_.empty() ? 0 : out + 1);
     sorted_ = true;
   }
+  /// Sorts the terms stably by merging their ascending runs, where there are few of them (a
+  /// side is usually a few sorted sums added one after another: 11 % of a double check at
+  /// n = 1000 went to radix-sorting such sides, perf). A stable sort has one result, so this is
+  /// the radix sort's order. False, doing nothing, where there are more than kMaxRuns runs.
+  template <class Less>
+  bool merge_sorted_runs(Less less) const {
+    constexpr size_t kMaxRuns = 8;
+    std::array<size_t, kMaxRuns + 1> starts{};
+    size_t runs = 1;
+    for (size_t i = 1; i < terms_.size(); ++i)
+      if (less(terms_[i], terms_[i - 1])) {
+        if (runs == kMaxRuns) return false;
+        starts[runs++] = i;
+      }
+    starts[runs] = terms_.size();
+    // Each run merged into the sorted prefix before it: equal monomials keep the prefix's first.
+    for (size_t r = 1; r < runs; ++r)
+      std::inplace_merge(terms_.begin(), terms_.begin() + static_cast<std::ptrdiff_t>(starts[r]),
+                         terms_.begin() + static_cast<std::ptrdiff_t>(starts[r + 1]), less);
+    return true;
+  }
+
   // Exact zero coefficients are kept: whether a coefficient vanishes is for the judge to say
   // (in floating point "zero" is a verdict, not a representation decision). Sorted and merged
   // lazily (normalize()), hence mutable; a RatePoly is never shared between threads.

@@ -176,6 +176,56 @@ TEST(RatePolyTerms, LargeUnsortedSumsGiveTheMapsTermsBitForBit) {
   }
 }
 
+// A side is usually a few sorted sums added one after another: its ascending runs are merged
+// (up to 8 of them) in place of the radix sort. From 1 to 10 runs, with monomials repeated within
+// and across runs, the terms are the map's, bit for bit.
+TEST(RatePolyTerms, SumsOfAFewSortedRunsGiveTheMapsTermsBitForBit) {
+  const unsigned seed = 20261128;
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> id(2, 60), degree(0, 2);
+  std::uniform_real_distribution<double> coef(-1, 1);
+  for (int runs = 1; runs <= 10; ++runs) {
+    SCOPED_TRACE(std::to_string(runs) + " runs");
+    RatePoly<double> p;
+    Reference ref;
+    for (int r = 0; r < runs; ++r) {
+      // One run: 40 ascending monomials, some of them twice in a row.
+      std::vector<std::vector<int>> ms;
+      for (int t = 0; t < 40; ++t) {
+        std::vector<int> m;
+        for (int d = degree(rng); d > 0; --d) m.push_back(id(rng));
+        std::sort(m.begin(), m.end());
+        ms.push_back(m);
+        if (t % 7 == 0) ms.push_back(m);
+      }
+      std::sort(ms.begin(), ms.end());  // the ids' lexicographic order, a prefix first: the monomials' order
+      RatePoly<double> run;
+      Reference run_ref;  // a run arrives in p as its terms, each monomial's added up already
+      for (const auto& m : ms) {
+        const double c = coef(rng);
+        RatePoly<double> term(c);
+        for (int i : m) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
+        run += term;
+        auto [it, fresh] = run_ref.emplace(m, c);
+        if (!fresh) it->second = it->second + c;
+      }
+      p += run;
+      for (const auto& [m, c] : run_ref) {
+        auto [it, fresh] = ref.emplace(m, c);
+        if (!fresh) it->second = it->second + c;
+      }
+    }
+    ASSERT_EQ(p.terms().size(), ref.size());
+    auto it = ref.begin();
+    for (const auto& [m, c] : p.terms()) {
+      ASSERT_EQ(ids_of(m), it->first);
+      ASSERT_EQ(c, it->second) << "coefficient of " << monomial_label(m);
+      ++it;
+    }
+  }
+}
+
 TEST(RatePolyTerms, ZeroCoefficientsAreKeptAndAbsentOnesReadAsZero) {
   const auto w = RatePoly<double>::variable({1, RateVariable::Omega});
   const RatePoly<double> p = w - w;
