@@ -89,6 +89,28 @@ TEST(RatePolyMonomial, LabelsAndIndicesReadTheIds) {
 /// The reference: the map the representation replaced, fed the same additions in the same order.
 using Reference = std::map<std::vector<int>, double>;
 
+/// c times the rate variables `ids`, made as the claims make it: a product of variables.
+RatePoly<double> term_of(const std::vector<int>& ids, double c) {
+  RatePoly<double> term(c);
+  for (int i : ids) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
+  return term;
+}
+/// ref[ids] += c: one monomial's coefficients added in the order they arrive.
+void accumulate(Reference& ref, const std::vector<int>& ids, double c) {
+  auto [it, fresh] = ref.emplace(ids, c);
+  if (!fresh) it->second = it->second + c;
+}
+/// p's terms are the map's: its monomials in order, each coefficient bit for bit.
+void expect_map_terms(const RatePoly<double>& p, const Reference& ref) {
+  ASSERT_EQ(p.terms().size(), ref.size());
+  auto it = ref.begin();
+  for (const auto& [m, c] : p.terms()) {
+    ASSERT_EQ(ids_of(m), it->first);
+    ASSERT_EQ(c, it->second) << "coefficient of " << monomial_label(m);
+    ++it;
+  }
+}
+
 TEST(RatePolyTerms, RandomSumsAndProductsGiveTheMapsTermsBitForBit) {
   const unsigned seed = 20261124;
   SCOPED_TRACE("seed " + std::to_string(seed));
@@ -160,19 +182,10 @@ TEST(RatePolyTerms, LargeUnsortedSumsGiveTheMapsTermsBitForBit) {
       for (int d = degree(rng); d > 0; --d) m.push_back(id(rng));
       std::sort(m.begin(), m.end());
       const double c = coef(rng);
-      RatePoly<double> term(c);
-      for (int i : m) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
-      p += term;
-      auto [it, fresh] = ref.emplace(m, c);
-      if (!fresh) it->second = it->second + c;
+      p += term_of(m, c);
+      accumulate(ref, m, c);
     }
-    ASSERT_EQ(p.terms().size(), ref.size());
-    auto it = ref.begin();
-    for (const auto& [m, c] : p.terms()) {
-      ASSERT_EQ(ids_of(m), it->first);
-      ASSERT_EQ(c, it->second) << "coefficient of " << monomial_label(m);
-      ++it;
-    }
+    expect_map_terms(p, ref);
   }
 }
 
@@ -204,25 +217,13 @@ TEST(RatePolyTerms, SumsOfAFewSortedRunsGiveTheMapsTermsBitForBit) {
       Reference run_ref;  // a run arrives in p as its terms, each monomial's added up already
       for (const auto& m : ms) {
         const double c = coef(rng);
-        RatePoly<double> term(c);
-        for (int i : m) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
-        run += term;
-        auto [it, fresh] = run_ref.emplace(m, c);
-        if (!fresh) it->second = it->second + c;
+        run += term_of(m, c);
+        accumulate(run_ref, m, c);
       }
       p += run;
-      for (const auto& [m, c] : run_ref) {
-        auto [it, fresh] = ref.emplace(m, c);
-        if (!fresh) it->second = it->second + c;
-      }
+      for (const auto& [m, c] : run_ref) accumulate(ref, m, c);
     }
-    ASSERT_EQ(p.terms().size(), ref.size());
-    auto it = ref.begin();
-    for (const auto& [m, c] : p.terms()) {
-      ASSERT_EQ(ids_of(m), it->first);
-      ASSERT_EQ(c, it->second) << "coefficient of " << monomial_label(m);
-      ++it;
-    }
+    expect_map_terms(p, ref);
   }
 }
 
