@@ -100,7 +100,9 @@ class Compiler {
         return {p};
       }
       case Op::Power: {
-        if (n.exponent < 0) throw NotCompiled{};  // a division, tested for zero by the walk
+        // A negative exponent divides (tested for zero, recorded as a divisor by the walk); so
+        // does 0 there (1 / 1), though the canonical form never makes one.
+        if (n.exponent <= 0) throw NotCompiled{};
         const Term f = term(n.children[0]);
         Term r{emit(Emit::One), {}};
         for (int q = 0; q < n.exponent; ++q) r = multiply(r, f);
