@@ -21,7 +21,7 @@
 namespace linkproof {
 namespace {
 
-std::string read(const std::string& relative) {
+std::string read_source(const std::string& relative) {
   std::ifstream in(std::string(LINKPROOF_SOURCE_DIR) + "/" + relative);
   std::stringstream s;
   s << in.rdbuf();
@@ -32,7 +32,7 @@ std::string read(const std::string& relative) {
 // norm2, components), powers, negation, polynomials of two monomials, globals, four-bar rates;
 // and bodies that must be walked: monomials equal at some bindings only, a division, a
 // polynomial-valued quantity.
-const char* const kBodies = R"(claims:
+const char* const kSummandBodies = R"(claims:
   - id: vectors
     source: test
     statement: s
@@ -56,7 +56,7 @@ const char* const kBodies = R"(claims:
 )";
 
 template <class T>
-struct SideRun {
+struct SummandSideRun {
   std::string error;
   std::vector<std::pair<Monomial, T>> terms;
   std::vector<std::string> undefined, violations;
@@ -64,11 +64,11 @@ struct SideRun {
 };
 
 template <class T>
-SideRun<T> run_side(const DataClaim& claim, const ClaimExpression& side, const PolygonContext<T>& c, int j, bool walk) {
+SummandSideRun<T> run_summand_side(const DataClaim& claim, const ClaimExpression& side, const PolygonContext<T>& c, int j, bool walk) {
   ClaimEvaluator<T> eval(c, claim.reading);
   eval.set_partial(true);
   eval.set_walk_only(walk);
-  SideRun<T> r;
+  SummandSideRun<T> r;
   IndexBindings b;
   b.j = j;
   try {
@@ -87,44 +87,44 @@ SideRun<T> run_side(const DataClaim& claim, const ClaimExpression& side, const P
 }
 
 template <class F>
-bool same_bits(const Tracked<F>& a, const Tracked<F>& b) {
+bool same_summand_bits(const Tracked<F>& a, const Tracked<F>& b) {
   const auto same = [](const auto& x, const auto& y) {
     return (std::isnan(x) && std::isnan(y)) || (x == y && std::signbit(x) == std::signbit(y));
   };
   return same(a.v, b.v) && same(a.e, b.e);
 }
-bool same_bits(const InlineRational& a, const InlineRational& b) { return a == b; }
+bool same_summand_bits(const InlineRational& a, const InlineRational& b) { return a == b; }
 
 template <class T>
-void expect_same(const SideRun<T>& compiled, const SideRun<T>& walked, const std::string& where) {
+void expect_same_side(const SummandSideRun<T>& compiled, const SummandSideRun<T>& walked, const std::string& where) {
   EXPECT_EQ(compiled.error, walked.error) << where;
   EXPECT_EQ(compiled.undefined, walked.undefined) << where;
   EXPECT_EQ(compiled.violations, walked.violations) << where;
   ASSERT_EQ(compiled.divisors.size(), walked.divisors.size()) << where;
-  for (size_t i = 0; i < compiled.divisors.size(); ++i) EXPECT_TRUE(same_bits(compiled.divisors[i], walked.divisors[i])) << where;
+  for (size_t i = 0; i < compiled.divisors.size(); ++i) EXPECT_TRUE(same_summand_bits(compiled.divisors[i], walked.divisors[i])) << where;
   ASSERT_EQ(compiled.terms.size(), walked.terms.size()) << where;
   for (size_t i = 0; i < compiled.terms.size(); ++i) {
     EXPECT_EQ(compiled.terms[i].first, walked.terms[i].first) << where << ": term " << i;
-    EXPECT_TRUE(same_bits(compiled.terms[i].second, walked.terms[i].second))
+    EXPECT_TRUE(same_summand_bits(compiled.terms[i].second, walked.terms[i].second))
         << where << ": " << monomial_label(compiled.terms[i].first);
   }
 }
 
 /// The number of sums in e whose body has a program.
-int compiled_sums(const ClaimExpression& e) {
+int compiled_sum_count(const ClaimExpression& e) {
   int k = 0;
   for (const auto& n : compiled_claim(e.expression()).nodes) k += n.op == ClaimProgram::Op::IndexSum && n.summand != nullptr;
   return k;
 }
 
-struct Case {
+struct SummandCase {
   std::string name;
   Polygon<Rational> polygon;
   InputRates<Rational> rates;
 };
 
-std::vector<Case> cases() {
-  std::vector<Case> out;
+std::vector<SummandCase> summand_cases() {
+  std::vector<SummandCase> out;
   for (int n = 4; n <= 9; ++n)
     for (int index = 0; index < 3; ++index) {
       const RandomPolygonCase c = generate_random_polygon(2811, n, index);  // seed 2811
@@ -139,29 +139,29 @@ std::vector<Case> cases() {
 }
 
 template <class T>
-int compare_routes(const std::vector<DataClaim>& claims) {
+int compare_summand_routes(const std::vector<DataClaim>& claims) {
   GroundTruthEngine engine;
   int compared = 0;
-  for (const Case& k : cases()) {
+  for (const SummandCase& k : summand_cases()) {
     const PolygonContext<T> c = build_polygon_context<T>(engine, k.polygon, k.rates);
     for (const DataClaim& claim : claims)
       for (const ClaimExpression* side : {&claim.lhs, &claim.rhs}) {
         const int j_last = claim.for_each_j ? c.inputs() : 0;
         for (int j = claim.for_each_j ? 1 : 0; j <= j_last; ++j) {
           const std::string where = k.name + ", claim " + claim.info.id + (side == &claim.lhs ? " lhs" : " rhs") + " j=" + std::to_string(j);
-          expect_same(run_side(claim, *side, c, j, false), run_side(claim, *side, c, j, true), where);
-          compared += compiled_sums(*side) > 0;
+          expect_same_side(run_summand_side(claim, *side, c, j, false), run_summand_side(claim, *side, c, j, true), where);
+          compared += compiled_sum_count(*side) > 0;
         }
       }
   }
   return compared;
 }
 
-std::vector<DataClaim> every_claim() {
+std::vector<DataClaim> every_summand_claim() {
   std::vector<DataClaim> all;
-  for (const auto& [text, source] : {std::pair{read("verify/claims/dijksman1966.yaml"), "dijksman1966.yaml"},
-                                     std::pair{read("verify/claims/wrong_variants.yaml"), "wrong_variants.yaml"},
-                                     std::pair{std::string(kBodies), "bodies"}}) {
+  for (const auto& [text, source] : {std::pair{read_source("verify/claims/dijksman1966.yaml"), "dijksman1966.yaml"},
+                                     std::pair{read_source("verify/claims/wrong_variants.yaml"), "wrong_variants.yaml"},
+                                     std::pair{std::string(kSummandBodies), "bodies"}}) {
     const ClaimFile f = parse_claim_file(text, source);
     all.insert(all.end(), f.claims.begin(), f.claims.end());
   }
@@ -169,16 +169,16 @@ std::vector<DataClaim> every_claim() {
 }
 
 TEST(SummandProgram, GivesTheWalksValuesBitForBitInDouble) {
-  const int compared = compare_routes<Tracked<double>>(every_claim());
+  const int compared = compare_summand_routes<Tracked<double>>(every_summand_claim());
   EXPECT_GT(compared, 500);  // sides with a compiled sum, over all cases
 }
 
 TEST(SummandProgram, GivesTheWalksValuesBitForBitInLongDouble) {
-  EXPECT_GT(compare_routes<Tracked<long double>>(every_claim()), 500);
+  EXPECT_GT(compare_summand_routes<Tracked<long double>>(every_summand_claim()), 500);
 }
 
 TEST(SummandProgram, GivesTheWalksValuesExactly) {
-  EXPECT_GT(compare_routes<InlineRational>(every_claim()), 500);
+  EXPECT_GT(compare_summand_routes<InlineRational>(every_summand_claim()), 500);
 }
 
 // A claim file refuses an index out of range at some n when it is read; an expression checked on
@@ -186,13 +186,13 @@ TEST(SummandProgram, GivesTheWalksValuesExactly) {
 TEST(SummandProgram, AnIndexOutOfRangeInACompiledBodyIsTheWalksError) {
   DataClaim claim;
   claim.lhs = ClaimExpression::parse("sum_j(i_out[j+1]*omega[j])");
-  ASSERT_EQ(compiled_sums(claim.lhs), 1);
+  ASSERT_EQ(compiled_sum_count(claim.lhs), 1);
   GroundTruthEngine engine;
   const RandomPolygonCase k = generate_random_polygon(2811, 7, 0);
   const PolygonContext<Tracked<double>> c = build_polygon_context<Tracked<double>>(engine, k.polygon, k.rates);
-  const SideRun<Tracked<double>> compiled = run_side(claim, claim.lhs, c, 0, false);
+  const SummandSideRun<Tracked<double>> compiled = run_summand_side(claim, claim.lhs, c, 0, false);
   EXPECT_NE(compiled.error.find("out of range 1..4 at n = 7"), std::string::npos) << compiled.error;
-  expect_same(compiled, run_side(claim, claim.lhs, c, 0, true), "i_out[j+1]");
+  expect_same_side(compiled, run_summand_side(claim, claim.lhs, c, 0, true), "i_out[j+1]");
 }
 
 TEST(SummandProgram, CompilesABodyOnlyWhereItsTreeDecidesEveryStep) {

@@ -14,12 +14,12 @@
 namespace linkproof {
 namespace {
 
-cln::cl_I to_cln(WideWord x) {
+cln::cl_I wide_to_cln(WideWord x) {
   return cln::ash(cln::cl_I(static_cast<unsigned long long>(x >> 64)), 64) + cln::cl_I(static_cast<unsigned long long>(x));
 }
 
 // A number below 2^bits (0 for bits = 0).
-WideWord draw(std::mt19937_64& g, int bits) {
+WideWord draw_wide(std::mt19937_64& g, int bits) {
   const WideWord x = static_cast<WideWord>(g()) << 64 | g();
   return bits == 0 ? 0 : bits == 128 ? x : x & ((static_cast<WideWord>(1) << bits) - 1);
 }
@@ -30,16 +30,16 @@ TEST(WordGcd, WideGcdIsClnsGcdAtEverySizePair) {
   for (int bu = 0; bu <= 128; bu += 4)
     for (int bv = 0; bv <= 128; bv += 4)
       for (int trial = 0; trial < 12; ++trial) {
-        WideWord u = draw(g, bu), v = draw(g, bv);
+        WideWord u = draw_wide(g, bu), v = draw_wide(g, bv);
         // A planted common factor (odd, even or a power of two) where it keeps both in range.
-        const WideWord f = trial % 3 == 0 ? draw(g, 20) | 1 : trial % 3 == 1 ? static_cast<WideWord>(1) << (g() % 30) : 1;
+        const WideWord f = trial % 3 == 0 ? draw_wide(g, 20) | 1 : trial % 3 == 1 ? static_cast<WideWord>(1) << (g() % 30) : 1;
         if (bu <= 96 && bv <= 96) {
           u *= f;
           v *= f;
         }
         if (trial == 11) v = u;  // equal operands
         const WideWord r = wide_gcd(u, v);
-        ASSERT_EQ(to_cln(r), cln::gcd(to_cln(u), to_cln(v))) << "u = " << to_cln(u) << ", v = " << to_cln(v);
+        ASSERT_EQ(wide_to_cln(r), cln::gcd(wide_to_cln(u), wide_to_cln(v))) << "u = " << wide_to_cln(u) << ", v = " << wide_to_cln(v);
         ++checked;
       }
   EXPECT_EQ(checked, 33 * 33 * 12);
