@@ -127,11 +127,8 @@ TEST(RatePolyTerms, RandomSumsAndProductsGiveTheMapsTermsBitForBit) {
         for (int d = count(rng) % 3; d > 0; --d) ids.push_back(id(rng));
         std::sort(ids.begin(), ids.end());
         const double c = coef(rng);
-        RatePoly<double> term(c);
-        for (int i : ids) term = term * RatePoly<double>::variable(RateVariable::from_id(i));
-        p[s] += term;
-        auto [it, fresh] = ref[s].emplace(ids, c);
-        if (!fresh) it->second = it->second + c;
+        p[s] += term_of(ids, c);
+        accumulate(ref[s], ids, c);
       }
     // The product, term by term as the map did it.
     Reference prod;
@@ -140,14 +137,10 @@ TEST(RatePolyTerms, RandomSumsAndProductsGiveTheMapsTermsBitForBit) {
         std::vector<int> m = ma;
         m.insert(m.end(), mb.begin(), mb.end());
         std::sort(m.begin(), m.end());
-        auto [it, fresh] = prod.emplace(m, ca * cb);
-        if (!fresh) it->second = it->second + ca * cb;
+        accumulate(prod, m, ca * cb);
       }
     Reference sum = ref[0];
-    for (const auto& [m, c] : ref[1]) {
-      auto [it, fresh] = sum.emplace(m, c);
-      if (!fresh) it->second = it->second + c;
-    }
+    for (const auto& [m, c] : ref[1]) accumulate(sum, m, c);
     const auto expect_same = [&](const RatePoly<double>& got, const Reference& want, const char* what) {
       ASSERT_EQ(got.terms().size(), want.size()) << what << " round " << round;
       auto it = want.begin();
