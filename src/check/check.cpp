@@ -76,6 +76,10 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
       }
       return out;
     }
+    // Reserved: a ComparisonOutcome's move may throw (its CLN values are copied), so a vector
+    // that grew would copy every outcome made so far.
+    out.instances.reserve(sides.instances.size());
+    out.terms.reserve(sides.terms.size());
     Verdict v = Verdict::Holds;
     for (const auto& c : sides.instances) {
       out.instances.push_back(judge(c));
@@ -87,17 +91,14 @@ ClaimOutcome run_claim(const Claim& claim, const PolygonContext<T>& context, Evi
     }
     out.verdict = v;
     if constexpr (!ScalarTraits<T>::is_exact) name_inconclusive_cause(context, reads, out);
-    out.headline = out.instances.front();
-    for (const auto& group : {&out.instances, &out.terms}) {
-      bool found = false;
-      for (const auto& c : *group)
-        if (c.verdict == v) {
-          out.headline = c;
-          found = true;
-          break;
-        }
-      if (found) break;
+    const ComparisonOutcome* headline = &out.instances.front();
+    for (const auto* group : {&out.instances, &out.terms}) {
+      const auto it = std::find_if(group->begin(), group->end(), [v](const ComparisonOutcome& c) { return c.verdict == v; });
+      if (it == group->end()) continue;
+      headline = &*it;
+      break;
     }
+    out.headline = *headline;
   } catch (const UndefinedQuantity& u) {
     out.mark_undefined(u.quantity(), u.reason());
   } catch (const cln::floating_point_exception& e) {
@@ -198,6 +199,7 @@ PolygonCheck check_polygon(GroundTruthEngine& engine, const std::vector<Claim>& 
         r.omega_dot.push_back(ctx.truth().has_value() ? std::optional(result_number(ctx.truth().get().omega_dot[j])) : std::nullopt);
       }
     }
+    r.claims.reserve(catalogue.size());  // a ClaimOutcome's move may throw: growing would copy
     for (const Claim& claim : catalogue) {
       if (!claim.info.applies_to(r.n)) {
         r.not_applicable.push_back(claim.info.id);

@@ -90,8 +90,18 @@ class PolygonContext {
     reads_.readings |= static_cast<std::uint16_t>(1u << key);
     auto it = constructions_.find(key);
     if (it == constructions_.end()) {
+      // Readings that move the same points share their steps (the arithmetic): e.g. §A5.6's
+      // unsigned ratios are the correct reading's values read differently.
+      const int steps_key = construction_steps_key(r);
+      auto steps = construction_steps_.find(steps_key);
+      if (steps == construction_steps_.end()) {
+        const FourBarFrame<T> frame = make_four_bar_frame(polygon);
+        std::vector<FourBarSteps<T>> v;
+        for (int j = 1; j <= inputs(); ++j) v.push_back(construct_four_bar_steps(frame, polygon.joint(j), polygon.side(j), r));
+        steps = construction_steps_.emplace(steps_key, std::move(v)).first;
+      }
       std::vector<FourBarConstruction<T>> v;
-      for (int j = 1; j <= inputs(); ++j) v.push_back(construct_four_bar(polygon, j, r));
+      for (int j = 1; j <= inputs(); ++j) v.push_back(construction_from_steps(steps->second[static_cast<size_t>(j - 1)], j, r));
       it = constructions_.emplace(key, std::move(v)).first;
     }
     return it->second;
@@ -188,6 +198,8 @@ class PolygonContext {
   mutable std::optional<Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>> coefficients_;
   mutable std::optional<Defined<std::pair<std::vector<T>, std::vector<T>>>> velocity_coefficients_;
   mutable std::map<int, std::vector<FourBarConstruction<T>>> constructions_;
+  /// construct_four_bar_steps of every four-bar, by construction_steps_key (construction_for).
+  mutable std::map<int, std::vector<FourBarSteps<T>>> construction_steps_;
   mutable std::vector<std::optional<FourBarTruth<T>>> four_bars_;
   mutable Reads reads_;
 };

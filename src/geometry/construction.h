@@ -179,13 +179,18 @@ struct FourBarConstruction {
   Defined<T> mu;               ///< mu_j = i_{n-2,j}(1 - i_{n-2,j}) cot gamma_j
 };
 
-/// Builds the construction for input side j (1 <= j <= n-3) of polygon `poly`, every quantity
-/// named where it does not exist. A quantity built from an undefined one carries that one's
-/// name (i_{n-1,j} without Q_j says "Q_j"); beta_j reports P'_j before Q_j.
+/// Which points a reading moves (§A5.1, §A5.2): readings of one key get the same steps from
+/// construct_four_bar_steps and differ at most in how the values are read (§A5.6).
+inline int construction_steps_key(const ConstructionReading& r) {
+  return static_cast<int>(r.displaced_start) | static_cast<int>(r.beta_towards_p_prime) << 1;
+}
+
+/// The construction of four-bar j under `reading` from its steps `s`, which
+/// construct_four_bar_steps made under a reading of the same construction_steps_key: every
+/// quantity named where it does not exist.
 template <class T>
-FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j, const ConstructionReading& reading = {}) {
-  const FourBarFrame<T> f = make_four_bar_frame(poly);
-  const FourBarSteps<T> s = construct_four_bar_steps(f, poly.joint(j), poly.side(j), reading);
+FourBarConstruction<T> construction_from_steps(const FourBarSteps<T>& s, int j, const ConstructionReading& reading) {
+  const T one = from_int<T>(1);
   const auto sj = [j] { return std::to_string(j); };
   const auto kp_name = [&] { return reading.displaced_start ? "K'_" + sj() : "K_" + sj(); };
   // §A5.6: unsigned segment ratios (abs_value throws for a symbolic value: that, too, is named).
@@ -237,13 +242,22 @@ FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j, const C
   // From the values as read (equal to s.lambda, s.mu in the correct reading).
   c.lambda = Defined<T>::attempt([&] {
     const T& i = c.i_out.get();  // named before beta_j
-    return freudenstein_coefficient(i, c.cot_beta.get(), f.one);
+    return freudenstein_coefficient(i, c.cot_beta.get(), one);
   });
   c.mu = Defined<T>::attempt([&] {
     const T& i = c.i_cpl.get();  // named before gamma_j
-    return freudenstein_coefficient(i, c.cot_gamma.get(), f.one);
+    return freudenstein_coefficient(i, c.cot_gamma.get(), one);
   });
   return c;
+}
+
+/// Builds the construction for input side j (1 <= j <= n-3) of polygon `poly`, every quantity
+/// named where it does not exist. A quantity built from an undefined one carries that one's
+/// name (i_{n-1,j} without Q_j says "Q_j"); beta_j reports P'_j before Q_j.
+template <class T>
+FourBarConstruction<T> construct_four_bar(const Polygon<T>& poly, int j, const ConstructionReading& reading = {}) {
+  const FourBarSteps<T> s = construct_four_bar_steps(make_four_bar_frame(poly), poly.joint(j), poly.side(j), reading);
+  return construction_from_steps(s, j, reading);
 }
 
 /// Throws the UndefinedQuantity that reading i_{n-1,j}, i_{n-2,j}, lambda_j, mu_j (in this

@@ -1,6 +1,9 @@
 // Known answers of conventions §A8: every intermediate quantity of the construction.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
+#include "check/random_polygon.h"
 #include "geometry/closed_forms.h"
 #include "geometry/construction.h"
 #include "support/polygons.h"
@@ -80,6 +83,67 @@ TEST(Construction, ParallelLinesReportQAtInfinityByName) {
   EXPECT_EQ(c.q.quantity(), "Q_1");
   EXPECT_FALSE(c.i_out.has_value());
   EXPECT_EQ(compute_closed_forms(p).i_out[0], 1);  // the continuous extension (conventions §A6)
+}
+
+bool same_value(const Rational& a, const Rational& b) { return a == b; }
+bool same_value(const Vec2<Rational>& a, const Vec2<Rational>& b) { return a.x == b.x && a.y == b.y; }
+
+template <class V>
+void expect_same_defined(const Defined<V>& a, const Defined<V>& b, const std::string& what) {
+  ASSERT_EQ(a.has_value(), b.has_value()) << what;
+  if (a.has_value()) {
+    EXPECT_TRUE(same_value(a.get(), b.get())) << what;
+  } else {
+    EXPECT_EQ(a.quantity(), b.quantity()) << what;
+    EXPECT_EQ(a.reason(), b.reason()) << what;
+  }
+}
+
+void expect_same_construction(const FourBarConstruction<Rational>& a, const FourBarConstruction<Rational>& b,
+                              const std::string& what) {
+  EXPECT_EQ(a.j, b.j) << what;
+  EXPECT_TRUE(same_value(a.k_prime, b.k_prime)) << what;
+  expect_same_defined(a.q, b.q, what + " Q");
+  expect_same_defined(a.p_prime, b.p_prime, what + " P'");
+  expect_same_defined(a.i_out, b.i_out, what + " i_out");
+  expect_same_defined(a.i_cpl, b.i_cpl, what + " i_cpl");
+  expect_same_defined(a.cot_beta, b.cot_beta, what + " cot beta");
+  expect_same_defined(a.cot_gamma, b.cot_gamma, what + " cot gamma");
+  expect_same_defined(a.lambda, b.lambda, what + " lambda");
+  expect_same_defined(a.mu, b.mu, what + " mu");
+}
+
+ConstructionReading reading_of_bits(int bits) {
+  return {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0};
+}
+
+// PolygonContext::construction_for computes the steps once per construction_steps_key and
+// reads them under each reading: steps made under any reading of the key must give every
+// reading of it the construction construct_four_bar makes, defined or named.
+TEST(Construction, ReadingsOfOneStepsKeyGiveTheirConstructionsFromSharedSteps) {
+  constexpr std::uint64_t kSeed = 2812;
+  std::printf("construction steps seed %llu (generate_random_polygon(seed, n, index))\n",
+              static_cast<unsigned long long>(kSeed));
+  std::vector<Polygon<Rational>> polygons = {test::spec_pentagon().polygon, test::spec_hexagon().polygon,
+                                             Polygon<Rational>({{0, 0}, {1, 2}, {3, 3}, {5, 3}, {3, 1}})};
+  for (int n = 5; n <= 8; ++n)
+    for (int index = 0; index < 3; ++index) polygons.push_back(generate_random_polygon(kSeed, n, index).polygon);
+  int shared = 0;
+  for (const Polygon<Rational>& p : polygons) {
+    const FourBarFrame<Rational> frame = make_four_bar_frame(p);
+    for (int j = 1; j <= p.n() - 3; ++j)
+      for (int read = 0; read < 16; ++read)
+        for (int made = 0; made < 16; ++made) {
+          const ConstructionReading r = reading_of_bits(read), m = reading_of_bits(made);
+          if (construction_steps_key(r) != construction_steps_key(m)) continue;
+          const FourBarSteps<Rational> steps = construct_four_bar_steps(frame, p.joint(j), p.side(j), m);
+          expect_same_construction(construction_from_steps(steps, j, r), construct_four_bar(p, j, r),
+                                   "n=" + std::to_string(p.n()) + " j=" + std::to_string(j) + " read " +
+                                       std::to_string(read) + " made " + std::to_string(made));
+          ++shared;
+        }
+  }
+  EXPECT_GT(shared, 1000);
 }
 
 TEST(Construction, DirectedRatioIsNegativeWhenPointsStraddleTheOrigin) {
