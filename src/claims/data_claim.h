@@ -106,8 +106,12 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
     if (same) {
       const auto fewer = r.poly.get().terms().size() < l.poly.get().terms().size() ? shared_rhs : shared_lhs;
       Comparison<T> total{label, Defined<T>::pending(), Defined<T>::pending()};
-      total.same_value = [fewer, w, wd] { return fewer->total(w, wd); };
-      if (!c.values_on_demand) total.make_same_value();
+      if (c.values_on_demand) {
+        total.same_value = [fewer, w, wd] { return fewer->total(w, wd); };
+      } else {  // made now, as make_same_value() makes it (no copy of the rates to keep)
+        total.lhs = Defined<T>::attempt([&] { return fewer->total(w, wd); });
+        total.rhs = total.lhs;
+      }
       s.instances.push_back(std::move(total));
     } else {
       std::optional<T> lhs_total;

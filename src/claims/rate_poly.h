@@ -180,7 +180,10 @@ class RatePoly {
     if constexpr (GrowingExactNumber<T>) {
       // The terms with the same first variable are consecutive (the monomials' lexicographic
       // order): omega_j (c_jj omega_j + c_j,j+1 omega_{j+1} + ...), one product by omega_j.
+      // One buffer for every group's terms (reused) and one for the groups.
       std::vector<T> groups, inner;
+      groups.reserve(t.size());
+      inner.reserve(t.size());
       for (size_t i = 0; i < t.size();) {
         if (t[i].first.empty()) {
           groups.push_back(t[i++].second);
@@ -189,9 +192,9 @@ class RatePoly {
         const int first = t[i].first[0];
         inner.clear();
         for (; i < t.size() && !t[i].first.empty() && t[i].first[0] == first; ++i) inner.push_back(value(t[i], 1));
-        groups.push_back(balanced_sum(std::move(inner)) * rate(first));
+        groups.push_back(balanced_sum_in_place(inner) * rate(first));
       }
-      return balanced_sum(std::move(groups));
+      return balanced_sum_in_place(groups);
     } else {
       T sum = from_int<T>(0);
       for (const Term& term : t) sum = sum + value(term, 0);
@@ -288,6 +291,8 @@ class RatePoly {
       }
       if (m < last.first) sorted_ = false;
     }
+    // Most polynomials of a claim have a few terms: one allocation for up to 8, not four.
+    if (terms_.capacity() == 0) terms_.reserve(8);
     terms_.emplace_back(m, std::move(c));
   }
 

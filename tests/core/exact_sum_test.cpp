@@ -42,6 +42,25 @@ TEST(BalancedSum, GivesTheSequentialSumForEveryLengthInBothExactTypes) {
   }
 }
 
+// RatePoly::evaluate reuses one buffer for every group's sum: the in-place sum must give the
+// same value and leave the vector's storage to the next group (cleared and filled again).
+TEST(BalancedSum, InPlaceSumsOfOneReusedBufferGiveTheSequentialSums) {
+  std::mt19937_64 g(kBalancedSumSeed + 2);
+  std::vector<InlineRational> buffer;
+  buffer.reserve(70);
+  const InlineRational* storage = buffer.data();
+  for (int length = 0; length <= 70; ++length) {
+    buffer.clear();
+    Rational sequential = 0;
+    for (int k = 0; k < length; ++k) {
+      buffer.emplace_back(draw_with_own_denominator(g));
+      sequential = sequential + buffer.back().to_rational();
+    }
+    EXPECT_EQ(balanced_sum_in_place(buffer).to_rational(), sequential) << "length " << length;
+    EXPECT_EQ(buffer.data(), storage) << "length " << length << ": the buffer was given away";
+  }
+}
+
 TEST(BalancedSum, ExactRatePolynomialValueIsTheSumOfItsTermsAtTheRates) {
   std::mt19937_64 g(kBalancedSumSeed + 1);
   constexpr int kInputs = 40;
