@@ -71,9 +71,13 @@ class Monomial {
 
   /// a * b; a term of degree above kMaxDegree is refused (a claim's input error).
   static Monomial product(const Monomial& a, const Monomial& b) {
+    if (b.words_[0] == 0) return a;
+    if (a.words_[0] == 0) return b;
     const int na = a.size(), nb = b.size();
-    if (nb == 0) return a;
-    if (na == 0) return b;
+    // Degree <= 4 (a claim's terms are of degree 2): every slot in word 0, merged as stored
+    // values (id + 1, already checked when a and b were made). A summand program forms one
+    // product per instruction per j and l: the general merge below was 6 % of a double check.
+    if (na + nb <= 4) return product_in_word0(a.words_[0], na, b.words_[0], nb);
     check_degree(na + nb);
     Monomial m;
     int i = 0, k = 0, out = 0;
@@ -103,6 +107,24 @@ class Monomial {
   void set(int i, int id) {
     if (id < 0 || id > kMaxId) throw InternalError("rate variable id " + std::to_string(id) + " out of range");
     words_[static_cast<size_t>(i / 4)] |= static_cast<std::uint64_t>(id + 1) << shift(i);
+  }
+  /// The product of na slots of word a and nb of word b (na, nb >= 1, na + nb <= 4).
+  static Monomial product_in_word0(std::uint64_t a, int na, std::uint64_t b, int nb) {
+    Monomial m;
+    if (na == 1 && nb == 1) {  // the common case: omega_j * omega_l
+      const std::uint64_t x = a >> 48, y = b >> 48;
+      m.words_[0] = std::min(x, y) << 48 | std::max(x, y) << 32;
+      return m;
+    }
+    std::array<std::uint64_t, 4> slots{};
+    int k = 0;
+    for (int i = 0; i < na; ++i) slots[static_cast<size_t>(k++)] = a >> shift(i) & 0xffff;
+    for (int i = 0; i < nb; ++i) slots[static_cast<size_t>(k++)] = b >> shift(i) & 0xffff;
+    for (int i = 1; i < k; ++i)
+      for (int j = i; j > 0 && slots[static_cast<size_t>(j)] < slots[static_cast<size_t>(j - 1)]; --j)
+        std::swap(slots[static_cast<size_t>(j)], slots[static_cast<size_t>(j - 1)]);
+    for (int i = 0; i < k; ++i) m.words_[0] |= slots[static_cast<size_t>(i)] << shift(i);
+    return m;
   }
   static void check_degree(int degree) {
     if (degree > kMaxDegree)

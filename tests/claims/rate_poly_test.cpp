@@ -6,6 +6,7 @@
 #include <cln/rational.h>
 #include <cln/rational_io.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <vector>
@@ -72,6 +73,34 @@ TEST(RatePolyMonomial, ProductMergesTheIdsAndRefusesADegreeAboveTheLimit) {
     EXPECT_NE(std::string(e.what()).find("degree 9 in the rates"), std::string::npos) << e.what();
   }
   EXPECT_THROW((Monomial{1, 1, 1, 1, 1, 1, 1, 1, 1}), InputError);
+}
+
+// Products of degree <= 4 are merged in one word (product_in_word0), the rest by the general
+// merge: both must give the monomial of the sorted ids, for every split of the degree between
+// the factors, with repeated ids and the extreme ids.
+TEST(RatePolyMonomial, ProductIsTheMonomialOfTheSortedIdsAtEveryDegreeSplit) {
+  std::mt19937_64 g(2813);
+  const int extremes[] = {0, 1, Monomial::kMaxId - 1, Monomial::kMaxId};
+  std::uniform_int_distribution<int> small_id(0, 5), any_id(0, Monomial::kMaxId);
+  int checked = 0;
+  for (int na = 1; na <= 7; ++na)
+    for (int nb = 1; na + nb <= 8; ++nb)
+      for (int trial = 0; trial < 200; ++trial) {
+        std::vector<int> a, b;
+        for (int i = 0; i < na; ++i) a.push_back(trial % 3 == 0 ? small_id(g) : trial % 3 == 1 ? any_id(g) : extremes[g() % 4]);
+        for (int i = 0; i < nb; ++i) b.push_back(trial % 3 == 0 ? small_id(g) : trial % 3 == 1 ? any_id(g) : extremes[g() % 4]);
+        Monomial ma, mb;
+        for (int id : a) ma = Monomial::product(ma, Monomial{id});
+        for (int id : b) mb = Monomial::product(mb, Monomial{id});
+        std::vector<int> all = a;
+        all.insert(all.end(), b.begin(), b.end());
+        std::sort(all.begin(), all.end());
+        const Monomial p = Monomial::product(ma, mb);
+        ASSERT_EQ(ids_of(p), all) << "na " << na << " nb " << nb << " trial " << trial;
+        ASSERT_TRUE(p == Monomial::product(mb, ma));
+        ++checked;
+      }
+  EXPECT_EQ(checked, 28 * 200);
 }
 
 TEST(RatePolyMonomial, LabelsAndIndicesReadTheIds) {
