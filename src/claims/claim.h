@@ -52,9 +52,13 @@ struct Comparison {
   /// Makes lhs and rhs from same_value (if set), as an eager comparison would have them.
   void make_same_value() {
     if (!same_value) return;
-    lhs = Defined<T>::attempt(same_value);
-    rhs = lhs;
+    set_same_value(Defined<T>::attempt(same_value));
     same_value = nullptr;
+  }
+  /// Both sides the common value v (defined or not).
+  void set_same_value(Defined<T> v) {
+    lhs = std::move(v);
+    rhs = lhs;
   }
   /// "total", "j=1", "omega_dot[1]", "j=2: omega[1]*omega[2]", ...
   std::string full_label() const { return monomial ? label_head + monomial_label(*monomial) : label_head; }

@@ -109,8 +109,7 @@ ClaimSides<T> evaluate_data_claim(const DataClaim& claim, const PolygonContext<T
       if (c.values_on_demand) {
         total.same_value = [fewer, w, wd] { return fewer->total(w, wd); };
       } else {  // made now, as make_same_value() makes it (no copy of the rates to keep)
-        total.lhs = Defined<T>::attempt([&] { return fewer->total(w, wd); });
-        total.rhs = total.lhs;
+        total.set_same_value(Defined<T>::attempt([&] { return fewer->total(w, wd); }));
       }
       s.instances.push_back(std::move(total));
     } else {

@@ -214,9 +214,9 @@ class RatePoly {
         const int first = t[i].first[0];
         inner.clear();
         for (; i < t.size() && !t[i].first.empty() && t[i].first[0] == first; ++i) inner.push_back(value(t[i], 1));
-        groups.push_back(balanced_sum_in_place(inner) * rate(first));
+        groups.push_back(balanced_sum(inner) * rate(first));
       }
-      return balanced_sum_in_place(groups);
+      return balanced_sum(groups);
     } else {
       T sum = from_int<T>(0);
       for (const Term& term : t) sum = sum + value(term, 0);

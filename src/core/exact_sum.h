@@ -29,7 +29,7 @@ concept GrowingExactNumber = ScalarTraits<T>::is_exact && !requires { ScalarTrai
 /// The sum of terms[0..size) in a balanced tree: pairs of neighbours, then pairs of those. The
 /// terms are overwritten (their storage is the tree's), so a caller may reuse the vector.
 template <GrowingExactNumber T>
-T balanced_sum_in_place(std::vector<T>& terms) {
+T balanced_sum(std::vector<T>& terms) {
   if (terms.empty()) return from_int<T>(0);
   for (size_t width = terms.size(); width > 1;) {
     const size_t half = width / 2;
@@ -38,12 +38,6 @@ T balanced_sum_in_place(std::vector<T>& terms) {
     width = half + width % 2;
   }
   return std::move(terms[0]);
-}
-
-/// The sum of `terms` (consumed) in a balanced tree (balanced_sum_in_place).
-template <GrowingExactNumber T>
-T balanced_sum(std::vector<T> terms) {
-  return balanced_sum_in_place(terms);
 }
 
 }  // namespace linkproof

@@ -56,7 +56,7 @@ TEST(BalancedSum, InPlaceSumsOfOneReusedBufferGiveTheSequentialSums) {
       buffer.emplace_back(draw_with_own_denominator(g));
       sequential = sequential + buffer.back().to_rational();
     }
-    EXPECT_EQ(balanced_sum_in_place(buffer).to_rational(), sequential) << "length " << length;
+    EXPECT_EQ(balanced_sum(buffer).to_rational(), sequential) << "length " << length;
     EXPECT_EQ(buffer.data(), storage) << "length " << length << ": the buffer was given away";
   }
 }
