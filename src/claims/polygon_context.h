@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/exact_sum.h"
 #include "geometry/closed_forms.h"
 #include "geometry/construction.h"
 #include "symbolic/ground_truth.h"
@@ -173,8 +174,9 @@ class PolygonContext {
 
   // Four-bar j shares r_{n-2} and r_{n-1}, hence D, so it is at its dead centre too.
   FourBarTruth<T> solve_four_bar(int j) const {
-    const T zero = from_int<T>(0), one = from_int<T>(1);
     const Polygon<T> fb = make_four_bar_polygon(polygon, j);
+    if constexpr (GrowingExactNumber<T>) return solve_four_bar_from_terms(fb, j);
+    const T zero = from_int<T>(0), one = from_int<T>(1);
     FourBarTruth<T> t;
     const auto unit = attempt_unless_dead_centre<PolygonMotion<T>>(
         [&] { return engine_->motion(fb, InputRates<T>{{one}, {zero}}); });
@@ -188,6 +190,28 @@ class PolygonContext {
     t.omega_dot_cpl = Defined<T>::attempt([&] { return real.get().omega_dot[1]; });
     t.coefficients = attempt_unless_dead_centre<std::pair<TermCoefficients<T>, TermCoefficients<T>>>(
         [&] { return engine_->coefficients(fb); });
+    return t;
+  }
+
+  // Exact values are unique, so the four-bar's motion follows from one differentiation of its
+  // solution (GroundTruthEngine::terms) in place of two more evaluations of the motion (a tenth
+  // of an exact pentagon check, callgrind): omega_out = i omega_j with the velocity coefficient
+  // i, and omega-dot_out = c_dot omega-dot_j + c_sq omega_j^2 (a one-input four-bar has no other
+  // term). Floating point keeps the three evaluations, whose bits and bounds its outputs print.
+  FourBarTruth<T> solve_four_bar_from_terms(const Polygon<T>& fb, int j) const {
+    const Defined<SolutionTerms<T>> terms = attempt_unless_dead_centre<SolutionTerms<T>>([&] { return engine_->terms(fb); });
+    const T& w = omega_in(j);
+    const T& wd = omega_dot_in(j);
+    const auto omega_dot = [&](const TermCoefficients<T>& c) { return c.omega_dot[0] * wd + c.omega_sq[0] * (w * w); };
+    FourBarTruth<T> t;
+    t.ratio_out = Defined<T>::attempt([&] { return terms.get().velocity_out[0]; });
+    t.ratio_cpl = Defined<T>::attempt([&] { return terms.get().velocity_cpl[0]; });
+    t.omega_out = Defined<T>::attempt([&] { return terms.get().velocity_out[0] * w; });
+    t.omega_cpl = Defined<T>::attempt([&] { return terms.get().velocity_cpl[0] * w; });
+    t.omega_dot_out = Defined<T>::attempt([&] { return omega_dot(terms.get().out); });
+    t.omega_dot_cpl = Defined<T>::attempt([&] { return omega_dot(terms.get().cpl); });
+    t.coefficients = Defined<std::pair<TermCoefficients<T>, TermCoefficients<T>>>::attempt(
+        [&] { return std::pair(terms.get().out, terms.get().cpl); });
     return t;
   }
 
