@@ -71,11 +71,30 @@ class ClaimEvaluator {
   /// that is identically zero in symbolic coordinates is an ill-formed claim (InputError); in
   /// floating point one that is not distinguishable from zero makes the side's error bound
   /// unbounded, as the division would have.
+  ///
+  /// Likewise a quantity word that the side as written reads but its expression does not (GiNaC
+  /// cancelled it: 0*X, X - X, X^0) is evaluated on its own for every binding, so that the side
+  /// is undefined where the word is. In a proof (T = GiNaC::ex) every word is evaluated and its
+  /// values are kept in word_values(): D*omega_out reads omega_out = N/D although the product is
+  /// N, and the proof's exceptional set must list D.
   RatePoly<T> scalar(const ClaimExpression& side, IndexBindings b = {}) {
     std::optional<T> possibly_zero;
     for (const WrittenDivisor& d : side.divisors()) written_divisor(d, b, possibly_zero);
+    bool word_possibly_undefined = false;
+    for (const WrittenWord& w : side.words())
+      if (w.cancelled || kKeepsWordValues) written_word(w, b, word_possibly_undefined);
     RatePoly<T> v = scalar(side.expression(), b);
     if (possibly_zero) v = v.right_scaled(*possibly_zero);
+    if constexpr (ScalarTraits<T>::has_error_bound)
+      if (word_possibly_undefined) {
+        // Every coefficient, and the constant one (a side the word cancelled from may be 0,
+        // and a product with an exact 0 stays exact), is unbounded: inconclusive, never holds.
+        T one = from_int<T>(1), unknown = from_int<T>(0);
+        one.e = ScalarTraits<T>::Traits::unbounded();
+        unknown.e = ScalarTraits<T>::Traits::unbounded();
+        v = v.right_scaled(one);
+        v.add(Monomial{}, std::move(unknown));
+      }
     return v;
   }
 
@@ -85,6 +104,9 @@ class ClaimEvaluator {
   /// Every quantity the expression itself divided by (a proof lists where they vanish: the
   /// expression may cancel them, D/D = 1, and still be undefined where they are 0).
   const std::vector<T>& divisors() const { return divisors_; }
+  /// In a proof: the value of every quantity word the sides were written with, for every
+  /// binding (the proof lists where their divisors vanish).
+  const std::vector<T>& word_values() const { return word_values_; }
 
   /// Partial evaluation: a term of a sum whose input j makes a quantity undefined (Q_j at
   /// infinity, ...) is left out and j recorded here, instead of making the whole value
@@ -279,23 +301,16 @@ class ClaimEvaluator {
   /// Evaluates one written divisor at each binding of its indices (see scalar(ClaimExpression)).
   /// `possibly_zero` receives d * (1/d) for a floating-point d not distinguishable from 0: about 1,
   /// with an unbounded error bound.
-  void written_divisor(const WrittenDivisor& d, const IndexBindings& b, std::optional<T>& possibly_zero) {
+  static constexpr bool kKeepsWordValues = std::is_same_v<T, GiNaC::ex>;
+
+  /// f(bindings) for every binding of a written part's indices (every j of a sum_j, every pair
+  /// of a sum_pairs). In partial mode an undefined quantity in a sum leaves out that term's
+  /// inputs instead of making the side undefined.
+  template <class F>
+  void at_each_binding(IndexBinding binding, const IndexBindings& b, const F& f) {
     const auto at = [&](const IndexBindings& bb, std::vector<int> inputs) {
       try {
-        const RatePoly<T> v = scalar(d.expression, bb);
-        if (!v.is_constant()) throw error("division by an expression that contains rates: " + d.text);
-        T value = v.constant();
-        if (linkproof::is_zero(value)) {
-          if constexpr (std::is_same_v<T, GiNaC::ex>)
-            throw error("the divisor " + d.text + " (" + d.where +
-                        ") is identically zero: the claim is undefined at every configuration");
-          throw UndefinedQuantity("the divisor " + d.text + " of the claim as written", "it is zero at this configuration");
-        }
-        if constexpr (ScalarTraits<T>::has_error_bound) {
-          T one = value * (from_int<T>(1) / value);
-          if (ScalarTraits<T>::Traits::is_unbounded(one.e)) possibly_zero = std::move(one);
-        }
-        divisors_.push_back(std::move(value));
+        f(bb);
       } catch (const UndefinedQuantity& u) {
         if (!partial_ || inputs.empty()) throw;
         std::sort(inputs.begin(), inputs.end());
@@ -303,7 +318,7 @@ class ClaimEvaluator {
       }
     };
     const int m = c_.inputs();
-    switch (d.binding) {
+    switch (binding) {
       case IndexBinding::None:
       case IndexBinding::ForEachJ: at(b, {}); return;
       case IndexBinding::SumJ:
@@ -312,9 +327,71 @@ class ClaimEvaluator {
       case IndexBinding::SumPairs:
       case IndexBinding::SumPairsLt:
         for (int j = 1; j <= m; ++j)
-          for (int l = d.binding == IndexBinding::SumPairs ? 1 : j + 1; l <= m; ++l)
+          for (int l = binding == IndexBinding::SumPairs ? 1 : j + 1; l <= m; ++l)
             if (l != j) at({j, l}, {j, l});
         return;
+    }
+  }
+
+  void written_divisor(const WrittenDivisor& d, const IndexBindings& b, std::optional<T>& possibly_zero) {
+    at_each_binding(d.binding, b, [&](const IndexBindings& bb) {
+      const RatePoly<T> v = scalar(d.expression, bb);
+      if (!v.is_constant()) throw error("division by an expression that contains rates: " + d.text);
+      T value = v.constant();
+      if (linkproof::is_zero(value)) {
+        if constexpr (std::is_same_v<T, GiNaC::ex>)
+          throw error("the divisor " + d.text + " (" + d.where +
+                      ") is identically zero: the claim is undefined at every configuration");
+        throw UndefinedQuantity("the divisor " + d.text + " of the claim as written", "it is zero at this configuration");
+      }
+      if constexpr (ScalarTraits<T>::has_error_bound) {
+        T one = value * (from_int<T>(1) / value);
+        if (ScalarTraits<T>::Traits::is_unbounded(one.e)) possibly_zero = std::move(one);
+      }
+      divisors_.push_back(std::move(value));
+    });
+  }
+
+  /// Evaluates a written word for every binding (its value is discarded, or kept in a proof);
+  /// an undefined word throws UndefinedQuantity as in the expression, and in floating point
+  /// one whose bound is unbounded (not distinguishable from undefined) sets possibly_undefined.
+  /// Its locality notes are not the side's (the side does not read it, or reads it and makes
+  /// the notes itself).
+  void written_word(const WrittenWord& w, const IndexBindings& b, bool& possibly_undefined) {
+    // Notes made here are dropped, and so is the record of which were made: a side that is the
+    // word alone compiles to the same program and must make its notes itself.
+    struct SideNotes {  // restored however the evaluation ends
+      ClaimEvaluator& e;
+      size_t count;
+      std::map<const ClaimProgram*, std::vector<char>> noted;
+      ~SideNotes() {
+        std::swap(e.noted_, noted);
+        e.violations_.resize(count);
+      }
+    } side_notes{*this, violations_.size(), {}};
+    std::swap(noted_, side_notes.noted);
+    at_each_binding(w.binding, b, [&](const IndexBindings& bb) {
+      const ClaimProgram& p = compiled_claim(w.expression);
+      std::vector<char>& noted = noted_[&p];
+      noted.resize(p.indexes.size());
+      program_ = &p;
+      noted_now_ = &noted;
+      if (node(p.root).is_vector) {
+        Vector v = vector_of(p.root, bb);
+        read_word_value(std::move(v.x), possibly_undefined);
+        read_word_value(std::move(v.y), possibly_undefined);
+      } else {
+        read_word_value(scalar_of(p.root, bb), possibly_undefined);
+      }
+    });
+  }
+
+  void read_word_value(Scalar v, bool& possibly_undefined) {
+    const RatePoly<T> poly = std::move(v).to_poly();
+    for (const auto& t : poly.terms()) {
+      if constexpr (kKeepsWordValues) word_values_.push_back(t.second);
+      if constexpr (ScalarTraits<T>::has_error_bound)
+        possibly_undefined = possibly_undefined || ScalarTraits<T>::Traits::is_unbounded(t.second.e);
     }
   }
 
@@ -649,6 +726,7 @@ class ClaimEvaluator {
   ClaimReading reading_;
   std::vector<std::string> violations_;
   std::vector<T> divisors_;
+  std::vector<T> word_values_;  ///< in a proof: written_word's values
   bool partial_ = false;
   std::map<std::vector<int>, Undefined> undefined_inputs_;
   const ClaimProgram* program_ = nullptr;  ///< the program scalar() evaluates

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "claims/claim_program.h"
 #include "claims/expression_scanner.h"
 #include "claims/vocabulary.h"
 #include "linkproof/core/error.h"
@@ -158,6 +159,9 @@ class Scanner {
   };
   const std::vector<RawDivisor>& divisors() const { return divisors_; }
 
+  /// The quantity words as written (the word and its index), with their binding.
+  const std::vector<RawDivisor>& words() const { return words_; }
+
  private:
   std::string where(size_t offset) const {
     const auto [line, column] = positions_(offset);
@@ -303,6 +307,8 @@ class Scanner {
         if (!in_index) fail(t.offset, "'" + t.text + "' is an index: use it inside [ ], as in omega[" + t.text + "]");
       } else if (in_index) {
         fail(t.offset, "'" + t.text + "' inside an index: an index is built from n, j, l and integers");
+      } else {
+        words_.push_back({t.text, binding_, where(t.offset)});
       }
       return 1;
     }
@@ -350,6 +356,7 @@ class Scanner {
       }
       const bool input = w->arguments[0] == ClaimKind::InputIndex;
       uses_.push_back({w->name, input, text_.substr(first, tokens_[close].offset - first), binding_, where(t.offset)});
+      words_.push_back({text_.substr(t.offset, tokens_[close].offset + 1 - t.offset), binding_, where(t.offset)});
     }
     const IndexBinding outer = binding_;
     std::set<std::string> inner = bound;
@@ -378,7 +385,70 @@ class Scanner {
   IndexBinding binding_ = IndexBinding::None;
   std::vector<RawIndexUse> uses_;
   std::vector<RawDivisor> divisors_;
+  std::vector<RawDivisor> words_;
 };
+
+// --- Words that evaluation never reads ------------------------------------------------------
+
+// A leaf of a compiled expression: a quantity word, its index (null for a global word) and the
+// binding it is read under.
+struct Leaf {
+  const Word* word;
+  const ClaimProgram::Index* index;
+  IndexBinding binding;
+};
+
+bool same_index(const ClaimProgram::Index* a, const ClaimProgram::Index* b) {
+  if (!a || !b) return a == b;
+  if (a->affine != b->affine) return false;
+  if (a->affine) return a->c0 == b->c0 && a->cn == b->cn && a->cj == b->cj && a->cl == b->cl;
+  return a->expression.is_equal(b->expression);
+}
+
+bool is_leaf(const ClaimProgram::Node& n) {
+  using Op = ClaimProgram::Op;
+  return n.op == Op::Global || n.op == Op::InputScalar || n.op == Op::InputVector || n.op == Op::SideVector ||
+         n.op == Op::SideScalar;
+}
+
+void collect_leaves(const ClaimProgram& p, int id, IndexBinding binding, std::vector<Leaf>& out) {
+  const ClaimProgram::Node& n = p.nodes[static_cast<size_t>(id)];
+  if (is_leaf(n)) {
+    out.push_back({n.word, n.index >= 0 ? &p.indexes[static_cast<size_t>(n.index)] : nullptr, binding});
+    return;
+  }
+  if (n.op == ClaimProgram::Op::IndexSum) binding = sum_binding(*n.word);
+  for (int c : n.children) collect_leaves(p, c, binding, out);
+}
+
+// Sets `cancelled` on each word that the compiled expression does not read as written (the same
+// word, index and binding). A word that does not compile to one leaf is marked too (evaluated
+// on its own: the safe side). An expression that does not compile marks nothing: evaluating it
+// fails with that error before any word matters.
+void mark_cancelled_words(const GiNaC::ex& expression, IndexBinding top, std::vector<WrittenWord>& words) {
+  if (words.empty()) return;
+  std::vector<Leaf> read;
+  try {
+    const ClaimProgram& p = compiled_claim(expression);
+    collect_leaves(p, p.root, top, read);
+  } catch (const InputError&) {
+    return;
+  }
+  for (WrittenWord& w : words) {
+    const ClaimProgram* alone = nullptr;
+    try {
+      alone = &compiled_claim(w.expression);
+    } catch (const InputError&) {
+      w.cancelled = true;
+      continue;
+    }
+    const ClaimProgram::Node& root = alone->nodes[static_cast<size_t>(alone->root)];
+    const ClaimProgram::Index* index = root.index >= 0 ? &alone->indexes[static_cast<size_t>(root.index)] : nullptr;
+    w.cancelled = !is_leaf(root) || std::none_of(read.begin(), read.end(), [&](const Leaf& l) {
+      return l.word == root.word && l.binding == w.binding && same_index(l.index, index);
+    });
+  }
+}
 
 }  // namespace
 
@@ -438,6 +508,20 @@ ClaimExpression ClaimExpression::parse(const std::string& text, const Expression
     }
     if (!GiNaC::is_exactly_a<GiNaC::numeric>(divisor)) e.divisors_.push_back({d.text, divisor, d.binding, d.where});
   }
+  for (const auto& w : scanner.words()) {
+    std::string ginac_word = w.text;
+    for (char& ch : ginac_word) {
+      if (ch == '[') ch = '(';
+      if (ch == ']') ch = ')';
+    }
+    try {
+      GiNaC::parser reader(atoms().symtab, /*strict=*/true, atoms().prototypes);
+      e.words_.push_back({w.text, reader(ginac_word), w.binding, w.where, false});  // a part of what parsed above
+    } catch (const std::exception& x) {
+      throw InputError(w.where, context.field, "cannot read " + w.text + ": " + x.what());
+    }
+  }
+  mark_cancelled_words(e.expression_, context.j_is_free ? IndexBinding::ForEachJ : IndexBinding::None, e.words_);
   return e;
 }
 

@@ -58,6 +58,22 @@ struct WrittenDivisor {
   std::string where;    ///< "FILE:LINE:COLUMN" of its first character
 };
 
+/// One quantity word of an expression as written (`omega_out`, `cot_beta[j]`, `Q[j+1]`, not a
+/// function such as dot or a sum). GiNaC simplifies as it builds (0*X = 0, X - X = 0, X^0 = 1,
+/// D*N/D = N), and the canonical form may cancel more, so a word can be gone from what is
+/// evaluated although the claim as written is undefined where the word is (a dead centre, Q at
+/// infinity). The evaluator evaluates each word that is gone (claim_evaluator.h), and in a proof
+/// every word, whose divisors belong to the exceptional set.
+struct WrittenWord {
+  std::string text;     ///< as written, e.g. "cot_beta[j]"
+  GiNaC::ex expression;  ///< its own parse
+  IndexBinding binding = IndexBinding::None;  ///< which sum binds its j, l
+  std::string where;    ///< "FILE:LINE:COLUMN" of its first character
+  /// True if the compiled expression (claim_program.h) has no leaf of this word with this index
+  /// under this binding: evaluating the expression never reads it.
+  bool cancelled = false;
+};
+
 class ClaimExpression {
  public:
   /// Checks and parses `text`; throws InputError naming file:line:column, the field and the problem.
@@ -73,6 +89,8 @@ class ClaimExpression {
   const std::vector<IndexUse>& index_uses() const { return index_uses_; }
   /// Every divisor as written, in the order of the text.
   const std::vector<WrittenDivisor>& divisors() const { return divisors_; }
+  /// Every quantity word as written, in the order of the text.
+  const std::vector<WrittenWord>& words() const { return words_; }
   const std::string& field() const { return field_; }
 
  private:
@@ -80,6 +98,7 @@ class ClaimExpression {
   GiNaC::ex expression_;
   std::vector<IndexUse> index_uses_;
   std::vector<WrittenDivisor> divisors_;
+  std::vector<WrittenWord> words_;
   std::string field_;
 };
 

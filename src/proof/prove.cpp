@@ -34,7 +34,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
                                   std::vector<ex>(static_cast<size_t>(n - 3), ex(0))};
   ZeroTestLog log;
   const PolygonContext<ex> ctx = build_polygon_context_from<ex>(engine, sp.polygon, zero_rates, false);
-  std::vector<ex> compared, sides, claim_divisors;
+  std::vector<ex> compared, sides, claim_divisors, word_values;
   const std::string phase = "the per-n proof of " + claim.info.id + " at n = " + std::to_string(n);
   RationalNormalizer normalizer;  // shared by every coefficient: their common parts are normalised once
   const auto compare_at = [&](int j) {
@@ -44,6 +44,7 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
     const RatePoly<ex> lhs = eval.scalar(claim.lhs, b);
     const RatePoly<ex> rhs = eval.scalar(claim.rhs, b);
     claim_divisors.insert(claim_divisors.end(), eval.divisors().begin(), eval.divisors().end());
+    word_values.insert(word_values.end(), eval.word_values().begin(), eval.word_values().end());
     if (not_local) {
       for (const auto& v : eval.locality_violations()) not_local->push_back(v);
       if (lhs.degree() > 2 || rhs.degree() > 2) not_local->push_back("degree > 2 in the rates");
@@ -77,10 +78,13 @@ PerNProof prove_at(GroundTruthEngine& engine, const DataClaim& claim, int n, std
       l_as_j[sp.x[1]] = sp.x[0];
       l_as_j[sp.y[1]] = sp.y[0];
     }
-    // The divisors still in the compared expressions as built, and those of the claim's own
-    // expression (which GiNaC may have cancelled on the spot, D/D = 1).
+    // The divisors still in the compared expressions as built, those of the claim's own
+    // expression and those of every word it was written with (which GiNaC may have cancelled
+    // on the spot: D/D = 1, D*omega_out = N).
     std::vector<ex> divisors = divisors_in(sides);
     divisors.insert(divisors.end(), claim_divisors.begin(), claim_divisors.end());
+    const std::vector<ex> of_words = divisors_in(word_values);
+    divisors.insert(divisors.end(), of_words.begin(), of_words.end());
     *except = exceptional_sets(ctx, divisors, names, general ? &l_as_j : nullptr, normalizer);
   }
   r.seconds = prove_seconds_since(start);
