@@ -196,6 +196,11 @@ ClaimOutcome run_mechanism_claim(const MechanismClaim& claim, const MechanismCon
   out.info = claim.info;
   try {
     const ClaimSides<Rational> sides = claim.evaluate(ctx);
+    if (sides.instances.empty() && sides.terms.empty()) {  // nothing compared is no pass
+      out.verdict = Verdict::Error;
+      out.error = "the claim produced no comparison";
+      return out;
+    }
     Verdict v = Verdict::Holds;
     for (const auto& c : sides.instances) out.instances.push_back(judge(c));
     for (const auto& c : sides.terms) out.terms.push_back(judge(c));
@@ -276,7 +281,17 @@ std::vector<MechanismClaim> builtin_mechanism_claims() {
         }
         return sides;
       },
-      [](const MechanismContext& c) { return c.truth.mobility == 1; }});
+      // Applies only where some moving link other than the input turns: a link at rest cannot
+      // drive, and with none to drive the claim would compare nothing.
+      [](const MechanismContext& c) {
+        if (c.truth.mobility != 1) return false;
+        const Linkage& g = c.scene.linkage;
+        for (int l = 0; l < g.link_count(); ++l) {
+          const bool is_input = c.scene.inputs[0].kind == MechanismInput::Kind::Link && c.scene.inputs[0].index == l;
+          if (l != g.ground() && !is_input && !cln::zerop(c.truth.motion.omega[static_cast<size_t>(l)])) return true;
+        }
+        return false;
+      }});
   return out;
 }
 
