@@ -28,6 +28,30 @@ namespace linkproof {
 
 namespace {
 
+// Whether an expression reads the motion: a rate, a velocity or acceleration, a pole, a centre
+// of curvature, a sliding rate (not positions or axes alone).
+bool reads_motion(const MechanismNode& n) {
+  if (n.op == MechanismNode::Op::Call) {
+    switch (n.word->evaluation) {
+      case Evaluation::Omega:
+      case Evaluation::OmegaRelative:
+      case Evaluation::Alpha:
+      case Evaluation::AlphaRelative:
+      case Evaluation::Velocity:
+      case Evaluation::VelocityRelative:
+      case Evaluation::Acceleration:
+      case Evaluation::AccelerationRelative:
+      case Evaluation::Pole:
+      case Evaluation::Centre:
+      case Evaluation::CentreAt:
+      case Evaluation::SlidingV:
+      case Evaluation::SlidingA: return true;
+      default: break;
+    }
+  }
+  return std::any_of(n.children.begin(), n.children.end(), [](const MechanismNode& c) { return reads_motion(c); });
+}
+
 using GiNaC::ex;
 using ProofClock = std::chrono::steady_clock;
 using proof_detail::NamedDegeneracies;
@@ -422,7 +446,10 @@ class TopologyProver {
     RationalNormalizer normalizer(false);  // the denominators are known: no gcds (rational_normal.h)
     normalizer.set_term_limit(kTermLimit);
     normalizer.set_deadline(deadline);
-    bool uses_motion = false;
+    // A claim that reads the motion is about a mechanism whose velocities exist only where det A
+    // != 0, whatever its residual's denominators say: a solved rate whose Cramer numerator is
+    // identically 0 is 0, with no trace of det A.
+    bool uses_motion = reads_motion(claim.lhs.root()) || reads_motion(claim.rhs.root());
     proof_detail::PackedNormalizer packed;
     packed.set_deadline(deadline);
     packed.set_limits(options_.packed_limits);

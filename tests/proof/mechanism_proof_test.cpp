@@ -67,6 +67,44 @@ TEST(MechanismProof, FourBarClaimsAreProvedForEveryConfigurationAndWrongVariants
   EXPECT_TRUE(mentions(pole.except, "parallel")) << "meet divides by the cross product of its lines";
 }
 
+// A dyad pinned to the frame at both ends does not turn, except where its two pins and their
+// joint are collinear: there the velocity system is singular (the scene has mobility 2) and
+// omega_5 = 1, omega_6 = -1 satisfies every constraint. Its solved rate has the numerator 0,
+// so the residual showed no det A and the claim was proved "on every configuration".
+TEST(MechanismProof, AClaimOnASolvedRateWhoseNumeratorIsZeroListsTheDeterminant) {
+  const MechanismScene s = parse_mechanism_scene(R"yaml(name: fourbar-with-ground-truss
+mechanism:
+  ground: "1"
+  links: ["1", "2", "3", "4", "5", "6"]
+  joints:
+    - {name: O2, type: revolute, links: ["1", "2"], at: [0, 0]}
+    - {name: A,  type: revolute, links: ["2", "3"], at: [3, 4]}
+    - {name: B,  type: revolute, links: ["3", "4"], at: [11, 10]}
+    - {name: O4, type: revolute, links: ["4", "1"], at: [11, 0]}
+    - {name: G1, type: revolute, links: ["1", "5"], at: [20, 0]}
+    - {name: C,  type: revolute, links: ["5", "6"], at: [25, 5]}
+    - {name: G2, type: revolute, links: ["6", "1"], at: [30, 0]}
+  inputs:
+    - {link: "2", omega: 2, omega_dot: 5}
+)yaml", "truss.yaml");
+  const TopologyProofRun run = prove_topology(s, claims_from(R"yaml(claims:
+  - id: truss_at_rest
+    source: test
+    statement: "omega(5) = 0"
+    lhs: omega("5")
+    rhs: 0
+  - id: truss_joint_at_rest
+    source: test
+    statement: "vel(C, 5) = 0"
+    lhs: vel(C, "5")
+    rhs: vec(0, 0)
+)yaml", s), {});
+  for (const TopologyProof& p : run.claims) {
+    EXPECT_EQ(p.verdict, ProofVerdict::ProvedGenerically) << p.info.id << ": " << to_string(p.verdict) << " " << p.error;
+    EXPECT_TRUE(mentions(p.except, "det A = 0")) << p.info.id << ": " << p.except.size() << " exceptions";
+  }
+}
+
 TEST(MechanismProof, AClaimAboutPositionsAloneIsProvedWithNoException) {
   const MechanismScene s = scene("verify/scenes/mechanisms/seed001_fourbar.yaml");
   const TopologyProofRun run = prove_topology(s, claims_from(R"yaml(claims:
