@@ -12,6 +12,8 @@ namespace linkproof {
 
 namespace {
 
+constexpr long kMaxIndexCoefficient = 1000000;
+
 /// The (j, l) values at which an affine index takes its extremes, at n sides (l = 0: unused).
 std::vector<std::pair<int, int>> vertices(IndexBinding b, int n) {
   const int m = n - 3;  // inputs
@@ -54,6 +56,12 @@ void check_claim_indices(const ClaimExpression& e, int min_n, int max_n) {
     const GiNaC::ex k0 = k.subs(GiNaC::lst{n_sym == 0, j_sym == 0, l_sym == 0});
     if (!GiNaC::is_exactly_a<GiNaC::numeric>(k0) || !GiNaC::ex_to<GiNaC::numeric>(k0).is_integer())
       refuse("the index of " + written + " must be an integer affine function of n, j and l (such as j, n-1, 2)");
+    // Every coefficient a small integer: read as a machine integer below (to_long), a larger one
+    // would wrap (2^64 + 1 read as 1) and name another side.
+    for (const GiNaC::ex& c : {k0, k.diff(n_sym), k.diff(j_sym), k.diff(l_sym)})
+      if (GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(c)) > kMaxIndexCoefficient)
+        refuse("the index of " + written + " has a coefficient beyond " + std::to_string(kMaxIndexCoefficient) +
+               " in magnitude; no polygon has that many sides (docs/limits.md)");
     const std::string range = u.input_index ? "1..n-3 (an input)" : "1..n (a side or joint)";
     const auto bounds_at = [&](int n, std::pair<int, int> jl) {
       const GiNaC::ex v = k.subs(GiNaC::lst{n_sym == n, j_sym == jl.first, l_sym == jl.second});

@@ -220,6 +220,8 @@ int ClaimProgram::Index::substituted(int n, int j, int l) const {
                                    index_symbol(Evaluation::IndexL) == l});
   if (!is_exactly_a<numeric>(v) || !ex_to<numeric>(v).is_integer())
     throw error("the index of " + written + " is not an integer");
+  // to_int() would wrap a larger one (2^32 + 1 read as 1) and name another side.
+  if (GiNaC::abs(ex_to<numeric>(v)) > numeric(1 << 30)) throw error("the index of " + written + " is " + text(v) + ", out of range");
   return ex_to<numeric>(v).to_int();
 }
 
