@@ -167,7 +167,8 @@ void add_report_command(CLI::App& app, Action& action) {
   r->add_option("--n", a.n, "claim files: prove for this number of sides only");
   r->add_option("--ladder-seconds", a.ladder_seconds,
                 "claim files: time for per-n proofs per claim (default 1, where a proof leaves part of the range "
-                "uncovered; given, they also re-check claims proved for every n)");
+                "uncovered; given, they also re-check claims proved for every n)")
+      ->check(seconds_validator());
   r->add_option("--arith", a.arith,
                 "polygon scenes: the arithmetic of the check (default: the scene's `ask: [arithmetic: ...]`, else exact)");
   r->add_flag("--numerics", a.numerics, "polygon scenes: add the numerics section (every floating-point arithmetic)");

@@ -42,25 +42,33 @@ PositionMap positions_in_file(const std::string& file_text, const YAML::Mark& ma
 }
 
 constexpr std::size_t kMaxClaimFileNodes = 100000;
+constexpr int kMaxClaimFileDepth = 500;  // as deep as the YAML parser itself nests (yaml_document.cpp)
 
 /// yaml-cpp keeps the first of two equal keys and `map[key]` reads it: a repeated key anywhere in
 /// a claim file is refused instead (the second `rhs:` would otherwise be ignored silently).
 /// `visits` bounds the walk: aliases can make a small file a huge tree ("billion laughs").
+/// `depth` bounds it too: an alias inside its own anchor (`a: &x [*x]`) makes a cycle, which the
+/// parser's own nesting limit does not see, and the walk would end only when the stack does.
 void refuse_repeated_keys(const YAML::Node& node, const std::string& source, const std::string& where,
-                          std::size_t& visits) {
+                          std::size_t& visits, int depth = 0) {
+  // The field as far as it is worth printing (a cycle repeats it: a[0][0][0]...).
+  const auto shown_where = [&] { return where.size() > 80 ? where.substr(0, 80) + "..." : where; };
   if (++visits > kMaxClaimFileNodes)
-    throw InputError(source, where, "the document expands (through aliases) to more than " +
-                                        std::to_string(kMaxClaimFileNodes) + " nodes (docs/limits.md)");
+    throw InputError(source, shown_where(), "the document expands (through aliases) to more than " +
+                                          std::to_string(kMaxClaimFileNodes) + " nodes (docs/limits.md)");
+  if (depth > kMaxClaimFileDepth)
+    throw InputError(source, shown_where(), "the document nests (through aliases) more than " + std::to_string(kMaxClaimFileDepth) +
+                                          " levels deep: an alias inside its own anchor? (docs/limits.md)");
   if (node.IsSequence()) {
     for (std::size_t i = 0; i < node.size(); ++i)
-      refuse_repeated_keys(node[i], source, where + "[" + std::to_string(i) + "]", visits);
+      refuse_repeated_keys(node[i], source, where + "[" + std::to_string(i) + "]", visits, depth + 1);
   } else if (node.IsMap()) {
     std::set<std::string> seen;
     for (const auto& kv : node) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
       const std::string field = (where.empty() ? "" : where + ".") + yaml_io::shorten(key, yaml_io::kMaxQuoted);
       if (!seen.insert(key).second) throw InputError(source, field, "field " + yaml_io::backticked(key) + " is given twice");
-      refuse_repeated_keys(kv.second, source, field, visits);
+      refuse_repeated_keys(kv.second, source, field, visits, depth + 1);
     }
   }
 }

@@ -20,6 +20,8 @@ json parse_line_object(const std::string& line, const std::string& file, const s
     j = json::parse(line);
   } catch (const json::parse_error& e) {
     throw InputError(file, where, std::string("not JSON: ") + e.what());
+  } catch (const json::exception& e) {  // e.g. out_of_range: a number beyond double's range (1e400)
+    throw InputError(file, where, std::string("not a result line: ") + e.what());
   }
   if (!j.is_object()) throw InputError(file, where, "must be a JSON object");
   return j;

@@ -62,10 +62,9 @@ std::string geneva_slot(const std::string& axis, const std::string& links) {
          "  inputs:\n    - {link: crank, omega: 2, omega_dot: 0}\n";
 }
 
-// A small sweep's result file (3 cases of n = 5) with line 2 changed by `edit`, and the command
-// line that resumes it.
-std::vector<std::string> resume_of_edited_sweep(const std::string& name,
-                                                const std::function<void(nlohmann::json&)>& edit) {
+// A small sweep's result file (3 cases of n = 5) with the text of line 2 changed by `edit`, and
+// the command line that resumes it.
+std::vector<std::string> resume_of_edited_sweep_text(const std::string& name, const std::function<void(std::string&)>& edit) {
   const std::string path = write_temp(name + ".jsonl", "");
   std::remove(path.c_str());
   const std::vector<std::string> sweep = {"sweep", "--n", "5", "--count", "3", "--jobs", "1", "--out", path};
@@ -73,11 +72,7 @@ std::vector<std::string> resume_of_edited_sweep(const std::string& name,
   std::ifstream in(path, std::ios::binary);
   std::string text, line;
   for (int number = 1; number <= 2 && std::getline(in, line); ++number) {
-    if (number == 2) {
-      nlohmann::json j = nlohmann::json::parse(line);
-      edit(j);
-      line = j.dump();
-    }
+    if (number == 2) edit(line);
     text += line + "\n";
   }
   in.close();
@@ -85,6 +80,16 @@ std::vector<std::string> resume_of_edited_sweep(const std::string& name,
   std::vector<std::string> resume = sweep;
   resume.insert(resume.end(), {"--resume", "--json"});
   return resume;
+}
+
+// ... with line 2 changed as JSON.
+std::vector<std::string> resume_of_edited_sweep(const std::string& name,
+                                                const std::function<void(nlohmann::json&)>& edit) {
+  return resume_of_edited_sweep_text(name, [&](std::string& line) {
+    nlohmann::json j = nlohmann::json::parse(line);
+    edit(j);
+    line = j.dump();
+  });
 }
 
 // check-data (issue 24): a four-bar scene with plain names, a CSV row of it, and the Watt I
@@ -125,6 +130,18 @@ const std::vector<Case>& corpus() {
       {"LeadingMinusSigns20000",
        [] { return std::vector<std::string>{"check-claim", write_temp("minus.yaml", claim_file(std::string(20000, '-') + "omega_out"))}; },
        2, "the limit is 20000", "", ""},
+      // An alias inside its own anchor: a cycle the YAML parser's nesting limit does not see;
+      // the walk for repeated keys followed it until the stack overflowed (SIGSEGV).
+      {"CyclicAliasAsTheListOfClaims",
+       [] { return std::vector<std::string>{"check-claim", write_temp("cycle.yaml", "claims: &c [*c]\n"), "--json"}; },
+       2, "an alias inside its own anchor", "", ""},
+      {"CyclicAliasInsideAClaim",
+       [] {
+         return std::vector<std::string>{"prove", "--file",
+                                         write_temp("cycle2.yaml", "claims:\n  - {id: c1, source: t, statement: t, lhs: omega_out, "
+                                                                   "rhs: omega_out, reading: &r [*r]}\n")};
+       },
+       2, "an alias inside its own anchor", "", ""},
       {"LeadingMinusSigns100",
        [] { return std::vector<std::string>{"check-claim", write_temp("minus100.yaml", claim_file(std::string(100, '-') + "omega_out"))}; },
        2, "100 signs in a row", "", ""},
@@ -205,6 +222,12 @@ const std::vector<Case>& corpus() {
        2, "the limit is 200", "", ""},
       {"LadderSecondsNaN",
        [] { return std::vector<std::string>{"prove", "--claim", "eq22", "--ladder-seconds", "nan"}; },
+       2, "not a time budget", "", ""},
+      {"LadderSecondsNaNInReport",  // report's option had no check: the ladder ran to the run's budget
+       [] {
+         return std::vector<std::string>{"report", write_temp("ok_report.yaml", claim_file("omega_out")), "--ladder-seconds",
+                                         "nan", "--out", ::testing::TempDir() + "nan_report"};
+       },
        2, "not a time budget", "", ""},
       {"LadderSecondsInfinityInCheckClaim",
        [] { return std::vector<std::string>{"check-claim", write_temp("ok.yaml", claim_file("omega_out")), "--ladder-seconds", "inf"}; },
@@ -393,6 +416,15 @@ const std::vector<Case>& corpus() {
          });
        },
        2, "line 2", "", "\"cases\""},
+      {"ResumeOfALineWithANumberBeyondDouble",
+       [] {
+         // nlohmann's out_of_range (number overflow), not a parse_error: it was an internal error, exit 3.
+         return resume_of_edited_sweep_text("number_beyond_double", [](std::string& line) {
+           const auto at = line.find("\"case\":");
+           line.insert(at + 7, "1e400,\"was\":");
+         });
+       },
+       2, "not a result line", "", ""},
       {"ResumeOfAResultFileWithAnUnknownClaim",
        [] { return resume_of_edited_sweep("unknown_claim", [](nlohmann::json& j) { j["verdicts"]["dijksman1966.eq99"] = "holds"; }); },
        2, "line 2", "", "\"cases\""},
