@@ -65,5 +65,24 @@ TEST(Dijksman1966Counting, TwoLoopsAreReportedAsNotEnough) {
   EXPECT_GT(not_as_expected, 0);
 }
 
+// One loop three times does not determine the velocities: the value claims and the sec. 3
+// count computed nothing, so they are errors, not disproved, and no rank is printed as -1.
+TEST(Dijksman1966Counting, LoopsThatDoNotDetermineTheVelocitiesGiveErrorsNotDisproofs) {
+  std::vector<std::string> notes;
+  const auto loops = parse_polygon_list("1-2-3-4-0,1-2-3-4-0,1-2-3-4-0", "test", "loops");
+  const auto claims = dijksman1966::eightbar_claims(dijksman1966::fig5_eightbar(), loops, notes);
+  int errors = 0;
+  for (const auto& c : claims) {
+    EXPECT_EQ(c.reason.find("-1"), std::string::npos) << c.id << ": " << c.reason;
+    EXPECT_EQ(c.observed_value.find("undetermined"), std::string::npos) << c.id;
+    if (c.id == "dijksman1966.fig5.omega" || c.id == "dijksman1966.fig5.omega_dot_4_0" ||
+        c.id == "dijksman1966.fig5.omega_dot_1_2" || c.id == "dijksman1966.sec3.count") {
+      EXPECT_EQ(c.verdict, CountVerdict::Error) << c.id << ": " << c.reason;
+      ++errors;
+    }
+  }
+  EXPECT_EQ(errors, 4);
+}
+
 }  // namespace
 }  // namespace linkproof

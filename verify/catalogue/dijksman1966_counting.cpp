@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "linkproof/core/error.h"
 #include "check/random_polygon.h"
 
@@ -167,33 +169,44 @@ std::vector<CountClaim> eightbar_claims(const CompoundMechanism& m, const std::v
                               "the velocities are not determined by these loops, so the constants of (22) are unknown"));
   }
 
-  // Known answers of conventions §A8 (the bundled geometry).
+  // Known answers of conventions §A8 (the bundled geometry). A value the loops do not determine
+  // is an error of the count, not a disproof: nothing was computed to compare.
+  const std::string not_determined = "the velocities are not determined by these loops: nothing to compare";
   const std::vector<std::string> omega_a8 = {"0", "1", "-7/317", "60/317", "159/317", "-20/317", "-279/317", "22/317"};
   if (static_cast<int>(omega_a8.size()) == links) {
-    std::string observed;
-    for (const auto& w : c.omega) observed += (observed.empty() ? "" : ", ") + (w ? format_rational(*w) : "?");
-    std::string expected;
-    for (const auto& w : omega_a8) expected += (expected.empty() ? "" : ", ") + w;
-    out.push_back(judge_value("dijksman1966.fig5.omega",
-                              "omega of links 0..7 relative to link 0 (docs/conventions.md §A8 known answer)", expected, observed));
+    const std::string statement = "omega of links 0..7 relative to link 0 (docs/conventions.md §A8 known answer)";
+    if (std::any_of(c.omega.begin(), c.omega.end(), [](const auto& w) { return !w.has_value(); })) {
+      out.push_back(count_error("dijksman1966.fig5.omega", statement, not_determined));
+    } else {
+      std::string observed;
+      for (const auto& w : c.omega) observed += (observed.empty() ? "" : ", ") + format_rational(*w);
+      std::string expected;
+      for (const auto& w : omega_a8) expected += (expected.empty() ? "" : ", ") + w;
+      out.push_back(judge_value("dijksman1966.fig5.omega", statement, expected, observed));
+    }
   }
   const auto value_claim = [&](const char* id, int a, int b, const char* expected) {
     const auto v = c.relative_omega_dot(a, b);
-    out.push_back(judge_value(id, fmt::format("omega-dot_{{{},{}}} = {} (docs/conventions.md §A8 known answer)", a, b, expected),
-                              expected, v ? format_rational(*v) : "undetermined"));
+    const std::string statement =
+        fmt::format("omega-dot_{{{},{}}} = {} (docs/conventions.md §A8 known answer)", a, b, expected);
+    out.push_back(v ? judge_value(id, statement, expected, format_rational(*v)) : count_error(id, statement, not_determined));
   };
   value_claim("dijksman1966.fig5.omega_dot_4_0", 4, 0, "171151479/318550130");
   value_claim("dijksman1966.fig5.omega_dot_1_2", 1, 2, "8471254/159275065");
 
   // conventions §A5.5: the sec. 3 count.
   const int remaining = all - c.with_input.rank;
-  const int supplied = c.with_polygons ? c.with_polygons->rank - c.with_input.rank : -1;
-  {
+  const std::string count_statement =
+      fmt::format("docs/conventions.md §A5.5 reading: once the input is given, {} - ({} + 1) = {} relations remain, "
+                  "and the {} pentagons x 2 supply them ({})",
+                  all, T, all - (T + 1), polygons, src);
+  if (!c.with_polygons) {
+    out.push_back(count_error("dijksman1966.sec3.count", count_statement,
+                              "the velocities are not determined by these loops, so what the loops supply is unknown"));
+  } else {
+    const int supplied = c.with_polygons->rank - c.with_input.rank;
     CountClaim k = judge_value(
-        "dijksman1966.sec3.count",
-        fmt::format("docs/conventions.md §A5.5 reading: once the input is given, {} - ({} + 1) = {} relations remain, "
-                    "and the {} pentagons x 2 supply them ({})",
-                    all, T, all - (T + 1), polygons, src),
+        "dijksman1966.sec3.count", count_statement,
         fmt::format("remaining {}, supplied {}", all - (T + 1), all - (T + 1)),
         fmt::format("remaining {}, supplied {}", remaining, supplied));
     k.reason = fmt::format("{} unknowns - rank {} = {}; the {} loops raise the rank by {} ({} x 2 = {})", all,
