@@ -30,7 +30,9 @@ void check_prove_limits(const std::optional<int>& n, double ladder_seconds) {
                      "a proof at one n is limited to n <= " + std::to_string(kMaxPerNProofSides) +
                          ": its cost grows about as n^3 (eq. 22: about 20 s at n = 20, hours at n = 200); the proof "
                          "for every n (without --n) covers n = " + std::to_string(*n) + " (docs/limits.md)");
-  if (ladder_seconds < 0 || ladder_seconds > kMaxClaimLadderSeconds)
+  // Written so that NaN fails too (every comparison with NaN is false: `nan` passed the range
+  // check and the ladder ran until the run's budget).
+  if (!(ladder_seconds >= 0 && ladder_seconds <= kMaxClaimLadderSeconds))
     throw InputError("<command line>", "--ladder-seconds",
                      fmt::format("must be between 0 and {}", kMaxClaimLadderSeconds));
 }
