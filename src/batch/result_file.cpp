@@ -35,6 +35,12 @@ ResultFile::ResultFile(const std::string& path, bool resume, const LineVisitor& 
       visit(line, ++number);
     }
     const long size = static_cast<long>(std::filesystem::file_size(path, ec));
+    // Only a line after lines the visitor accepted is taken for one a crash cut off: a file
+    // without any complete line may be anything (a mistyped --out), and is never cut.
+    if (size > complete_bytes && number == 0)
+      throw InputError(path, kField,
+                       "has no complete line, so it is not a result file of this run and is left as it is (a run "
+                       "killed while writing its first line leaves such a file: remove it to start again)");
     if (size > complete_bytes) {
       std::filesystem::resize_file(path, static_cast<std::uintmax_t>(complete_bytes), ec);
       if (ec) throw InputError(path, kField, "cannot cut off the incomplete last line: " + ec.message());

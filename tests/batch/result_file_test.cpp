@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "batch/result_file.h"
 #include "batch/sweep_files.h"
@@ -36,6 +38,37 @@ TEST(ResultFile, ErrorsNameTheResultFileAndNoOption) {
   } catch (const ResultFileExists& e) {
     EXPECT_EQ(e.field(), "result file");
   }
+}
+
+// Resuming cuts off a last line without its newline (a crash while writing it), but only after
+// lines the run accepted: a file of one line without a newline (a JSON document given to --out by
+// mistake) was emptied and overwritten by the sweep, exit 0.
+TEST(ResultFile, AFileWithoutACompleteLineIsNeverCutOnResume) {
+  const std::string dir = fresh_dir("result_file_no_line");
+  const std::string precious = dir + "/precious.json";
+  const std::string content = "{\"my\": \"precious data, one line, no trailing newline\"}";
+  std::ofstream(precious, std::ios::binary) << content;
+  long visited = 0;
+  try {
+    ResultFile f(precious, true, [&](const std::string&, long) { ++visited; });
+    FAIL() << "a file without a complete line was taken for a result file";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no complete line"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(visited, 0);
+  std::ifstream in(precious, std::ios::binary);
+  const std::string after((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(after, content);
+  const auto sweep = run_cli({"sweep", "--n", "4", "--count", "1", "--jobs", "1", "--out", precious, "--resume"});
+  EXPECT_EQ(sweep.code, 2) << sweep.out;
+  std::ifstream again(precious, std::ios::binary);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()), content);
+  // After a complete line the cut-off rule still applies: the partial line goes, the line stays.
+  const std::string cut = dir + "/cut.jsonl";
+  std::ofstream(cut, std::ios::binary) << "{\"line\": 1}\n{\"partial";
+  { ResultFile f(cut, true, ignore_line); }
+  std::ifstream cut_in(cut, std::ios::binary);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(cut_in)), std::istreambuf_iterator<char>()), "{\"line\": 1}\n");
 }
 
 TEST(ResultFile, TheCommandsNameTheirOutOptionWhereTheyCatchTheErrors) {
