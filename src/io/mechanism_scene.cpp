@@ -70,7 +70,7 @@ class MechanismReader {
     scene.linkage = Linkage(links_, ground, std::move(joints));
     scene.inputs = read_inputs(m, scene.linkage, scene.placement);
     refuse_zero_length_drivers(scene);
-    scene.points = read_points(m);
+    scene.points = read_points(m, scene.linkage);
     if (const YAML::Node t = m["tolerance"]) {
       scene.tolerance = read_exact_number(t, source_, "mechanism.tolerance", "the closure tolerance");
       if (cln::minusp(*scene.tolerance)) fail("mechanism.tolerance", "expected a tolerance >= 0");
@@ -476,7 +476,9 @@ class MechanismReader {
     return out;
   }
 
-  std::vector<MechanismPoint> read_points(const YAML::Node& m) {
+  // A point's name is its own: claims and the ask name joints and points alike, so a second
+  // point or a joint of that name would be read in its place.
+  std::vector<MechanismPoint> read_points(const YAML::Node& m, const Linkage& linkage) {
     std::vector<MechanismPoint> out;
     const YAML::Node ps = m["points"];
     if (!ps) return out;
@@ -487,6 +489,11 @@ class MechanismReader {
       check_keys(ps[i], f + ".", {"name", "link", "at"});
       MechanismPoint p;
       p.name = name_of(ps[i]["name"], f + ".name", "the point's name");
+      for (int k = 0; k < linkage.joint_count(); ++k)
+        if (linkage.joint(k).name == p.name)
+          fail(f + ".name", backticked(p.name) + " is the name of a joint: a tracer point needs a name of its own");
+      for (const MechanismPoint& q : out)
+        if (q.name == p.name) fail(f + ".name", "the point " + backticked(p.name) + " is given twice");
       p.link = link_index(ps[i]["link"], f + ".link", false);
       p.at = read_point(ps[i]["at"], f + ".at", "the point's position");
       out.push_back(std::move(p));

@@ -142,6 +142,22 @@ const std::vector<Case>& corpus() {
                                                                    "rhs: omega_out, reading: &r [*r]}\n")};
        },
        2, "an alias inside its own anchor", "", ""},
+      // A tracer point named like a joint, or like another point: claims silently read the other.
+      {"TracerPointNamedLikeAJoint",
+       [] {
+         return std::vector<std::string>{
+             "check", write_temp("point_joint.yaml", fourbar("[3, 4]", "[11, 10]", "[11, 0]") +
+                                                         "  points:\n    - {name: A, link: \"3\", at: [9, 14]}\n")};
+       },
+       2, "mechanism.points[0].name: `A` is the name of a joint", "", ""},
+      {"TwoTracerPointsOfOneName",
+       [] {
+         return std::vector<std::string>{
+             "check", write_temp("point_twice.yaml", fourbar("[3, 4]", "[11, 10]", "[11, 0]") +
+                                                         "  points:\n    - {name: P, link: \"3\", at: [9, 14]}\n"
+                                                         "    - {name: P, link: \"3\", at: [5, 5]}\n")};
+       },
+       2, "mechanism.points[1].name: the point `P` is given twice", "", ""},
       {"LeadingMinusSigns100",
        [] { return std::vector<std::string>{"check-claim", write_temp("minus100.yaml", claim_file(std::string(100, '-') + "omega_out"))}; },
        2, "100 signs in a row", "", ""},
