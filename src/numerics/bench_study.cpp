@@ -194,7 +194,8 @@ BenchResult run_bench(const BenchOptions& o) {
   for (const ExtremeFamily& f : extreme_families())
     if (o.families.empty() || o.families.count(f.name)) families.push_back(&f);
 
-  int total = o.random_cases + 2, done = 0;
+  // The random cases, the families' points, and the four adaptive summaries of step 3.
+  int total = o.random_cases + 4, done = 0;
   for (const ExtremeFamily* f : families) total += static_cast<int>((o.full ? f->full_values : f->quick_values).size());
   const auto tick = [&] {
     ++done;
