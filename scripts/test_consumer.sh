@@ -64,6 +64,27 @@ if [[ ! -f "$prefix/lib/cmake/linkproof/linkproofTestingTargets.cmake" ]]; then
   echo "==> test_consumer: linkproof::testing not installed (no RapidCheck/GTest at build time): oracle consumer skipped"
   exit 0
 fi
+# Asked for without RapidCheck, the component must be refused with a message that names it and
+# what it needs (CMake's own message names neither).
+missing_build="$(mktemp -d "${TMPDIR:-/tmp}/linkproof-missing.XXXXXX")"
+missing_src="$missing_build/src"
+mkdir -p "$missing_src"
+printf '%s\n' 'cmake_minimum_required(VERSION 3.22)' 'project(missing_testing LANGUAGES CXX)' \
+  'find_package(linkproof 0.1 REQUIRED COMPONENTS testing)' >"$missing_src/CMakeLists.txt"
+missing_log="$missing_build/configure.log"
+if cmake -S "$missing_src" -B "$missing_build/b" -DCMAKE_PREFIX_PATH="$prefix" \
+     -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON -DCMAKE_DISABLE_FIND_PACKAGE_rapidcheck=ON >"$missing_log" 2>&1; then
+  echo "test_consumer: ERROR: COMPONENTS testing was found without RapidCheck" >&2
+  exit 1
+fi
+if ! tr '\n' ' ' <"$missing_log" | tr -s ' ' | grep -q 'component `testing` (linkproof::testing) is not available: it needs RapidCheck'; then
+  cat "$missing_log"
+  echo "test_consumer: ERROR: the refusal does not name the component and RapidCheck" >&2
+  exit 1
+fi
+rm -rf -- "$missing_build"
+echo "==> test_consumer: COMPONENTS testing without RapidCheck is refused, naming what is missing"
+
 echo "==> test_consumer: oracle consumer (tests/oracle_consumer) against linkproof::testing"
 cmake -S "$repo_root/tests/oracle_consumer" -B "$oracle_build" \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON "${cmake_args[@]}"
