@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdlib>
 
 #include "claims/expression_scanner.h"
 #include "linkproof/core/error.h"
@@ -15,6 +17,7 @@ namespace {
 constexpr int kMaxNesting = 100;
 constexpr int kMaxExponent = 64;
 constexpr std::size_t kMaxIntegerDigits = 200;
+constexpr std::size_t kMaxExpressionDegree = 1024;  // as a polygon claim's term (claim_expression.cpp)
 
 using Tok = TokenKind;
 using Token = ExpressionToken;
@@ -32,6 +35,7 @@ class Parser {
     if (tokens_[i_].kind != Tok::End)
       fail(tokens_[i_].offset, tokens_[i_].kind == Tok::Close ? "'" + tokens_[i_].text + "' closes no bracket"
                                                                : "unexpected '" + tokens_[i_].text + "'");
+    (void)degree_bound(root);
     return root;
   }
 
@@ -57,6 +61,35 @@ class Parser {
     } catch (const ScanError& e) {
       fail(e.offset, e.problem);
     }
+  }
+
+  // A bound on the degree of a node, a number counting its digits (as the polygon language
+  // bounds a term): a product adds, a power multiplies. Past kMaxExpressionDegree the claim is
+  // refused before any work: ((N^64)^64)^64 of a 200-digit N is a 52-million-digit number that
+  // exact arithmetic would form and print for as long as the run's budget allows.
+  std::size_t degree_bound(const MechanismNode& n) const {
+    using Op = MechanismNode::Op;
+    std::size_t d = 0;
+    switch (n.op) {
+      case Op::Constant: d = n.text.size(); break;
+      case Op::Name: d = 0; break;
+      case Op::Negate: d = degree_bound(n.children[0]); break;
+      case Op::Add:
+      case Op::Subtract: d = std::max(degree_bound(n.children[0]), degree_bound(n.children[1])); break;
+      case Op::Multiply:
+      case Op::Divide: d = degree_bound(n.children[0]) + degree_bound(n.children[1]); break;
+      case Op::Power: d = degree_bound(n.children[0]) * static_cast<std::size_t>(std::abs(n.exponent)); break;
+      case Op::Call:
+        d = 1;
+        for (const MechanismNode& c : n.children) d += degree_bound(c);
+        break;
+    }
+    if (d > kMaxExpressionDegree)
+      throw InputError(n.where, context_.field,
+                       fmt::format("{} has degree (digits of numbers included) above {}: it would expand beyond the "
+                                   "budget (docs/limits.md)",
+                                   n.text.size() > 60 ? n.text.substr(0, 60) + "..." : n.text, kMaxExpressionDegree));
+    return d;
   }
 
   bool at_op(const char* op) const { return tokens_[i_].kind == Tok::Op && tokens_[i_].text == op; }

@@ -158,6 +158,16 @@ const std::vector<Case>& corpus() {
                                                          "    - {name: P, link: \"3\", at: [5, 5]}\n")};
        },
        2, "mechanism.points[1].name: the point `P` is given twice", "", ""},
+      // Each power within the limits, the whole a 52-million-digit number: the run formed and
+      // printed it for as long as its budget allowed.
+      {"NestedPowersOfALongIntegerInAMechanismClaim",
+       [] {
+         return std::vector<std::string>{
+             "check-claim",
+             write_temp("pow3.yaml", mechanism_claim("omega(\\\"3\\\")", "((" + std::string(199, '9') + "^64)^64)^64")),
+             "--scene", write_temp("pow3_scene.yaml", fourbar("[3, 4]", "[11, 10]", "[11, 0]"))};
+       },
+       2, "has degree (digits of numbers included) above 1024", "", ""},
       {"LeadingMinusSigns100",
        [] { return std::vector<std::string>{"check-claim", write_temp("minus100.yaml", claim_file(std::string(100, '-') + "omega_out"))}; },
        2, "100 signs in a row", "", ""},
