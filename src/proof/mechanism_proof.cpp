@@ -295,7 +295,13 @@ class TopologyProver {
     r.symbols = config_.names;
     r.relations = config_.relations;
     r.unknowns = scene_.linkage.unknown_count();
-    for (const MechanismDataClaim& c : claims) r.claims.push_back(prove(c));
+    for (const MechanismDataClaim& c : claims) {
+      r.claims.push_back(prove(c));
+      // In a claim file a claim that exists nowhere is not well formed: bad input naming it, as
+      // in the polygon language (a divisor identically zero), not an error of the program.
+      const TopologyProof& p = r.claims.back();
+      if (p.undefined_everywhere && !c.info.file.empty()) throw InputError(c.info.file, "claim '" + c.info.id + "'", p.error);
+    }
     if (motion_) {
       r.system_note = motion_->note;
       if (motion_->note.empty()) r.det_terms = static_cast<int>(GiNaC::is_exactly_a<GiNaC::add>(motion_->det) ? motion_->det.nops() : 1);
@@ -416,9 +422,11 @@ class TopologyProver {
         return decide_in(r, claim, p, deadline);
       } catch (const UndefinedQuantity& u) {
         p.verdict = ProofVerdict::Error;
+        p.undefined_everywhere = true;
         p.error = fmt::format("undefined on every configuration of the topology: {}: {}", u.quantity(), u.reason());
       } catch (const GiNaC::pole_error&) {
         p.verdict = ProofVerdict::Error;
+        p.undefined_everywhere = true;
         p.error = "undefined on every configuration of the topology: a division by an expression that is identically 0";
       } catch (const proof_detail::NormalizerOutOfTime& limit) {
         const std::string why =
@@ -579,6 +587,7 @@ class TopologyProver {
     for (const proof_detail::NamedFactor& f : factors) {
       if (vanishes(f.factor)) {
         p.verdict = ProofVerdict::Error;
+        p.undefined_everywhere = true;
         p.error = fmt::format("the claim is undefined on every configuration of the topology: it divides by {}, which "
                               "is 0 on every configuration", to_text(f.factor));
         return false;
@@ -591,6 +600,7 @@ class TopologyProver {
   // A claim whose degeneracy `meaning` holds on every configuration (with the solved rates).
   static void undefined_everywhere(TopologyProof& p, const std::string& meaning) {
     p.verdict = ProofVerdict::Error;
+    p.undefined_everywhere = true;
     p.error = "the claim is undefined on every configuration of the topology: " + meaning + " everywhere";
   }
 

@@ -75,6 +75,7 @@ struct TopologyProof {
   int numerator_terms = 0;    ///< terms of the residual's numerator (its known factors taken out, packed_normalizer.h) before the reduction
   double seconds = 0;
   std::string error;          ///< verdict error: why no verdict (e.g. undefined on every configuration)
+  bool undefined_everywhere = false;  ///< the error is that the claim is undefined on every configuration
   /// A true claim proved (or, not strict, holding on samples); an erratum disproved.
   bool is_as_expected() const;
 };

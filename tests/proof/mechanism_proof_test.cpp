@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "io/claim_file.h"
+#include "linkproof/core/error.h"
 #include "linkproof/io/mechanism_scene.h"
 #include "mechanism/mechanism_data_claim.h"
 #include "support/topology_claims.h"
@@ -182,6 +183,30 @@ TEST(MechanismProof, AClaimUndefinedOnEveryConfigurationIsAnErrorNotAProof) {
     EXPECT_EQ(p.verdict, ProofVerdict::Error) << p.info.id;
     EXPECT_FALSE(p.is_as_expected()) << p.info.id;
     EXPECT_NE(p.error.find("undefined"), std::string::npos) << p.error;
+  }
+}
+
+// Read from a claim file (check-claim, prove --file), the same claim is bad input naming the
+// file and the claim, as a polygon claim with an identically zero divisor is: it exited 3, the
+// status of an internal error.
+TEST(MechanismProof, AUserClaimUndefinedOnEveryConfigurationIsBadInput) {
+  const MechanismScene s = scene("verify/scenes/mechanisms/seed001_fourbar.yaml");
+  std::vector<MechanismDataClaim> claims = claims_from(R"yaml(claims:
+  - id: pole_of_a_link_with_itself
+    source: test
+    statement: "the pole of the coupler relative to itself"
+    lhs: pole("3", "3")
+    rhs: pos(A)
+)yaml", s);
+  claims[0].info.file = "mine.yaml";
+  try {
+    (void)prove_topology(s, claims, {});
+    FAIL() << "proved or judged";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("mine.yaml"), std::string::npos) << m;
+    EXPECT_NE(m.find("claim 'pole_of_a_link_with_itself'"), std::string::npos) << m;
+    EXPECT_NE(m.find("undefined on every configuration"), std::string::npos) << m;
   }
 }
 
