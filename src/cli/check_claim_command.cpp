@@ -28,6 +28,7 @@
 #include "linkproof/io/scene.h"
 #include "report/json_report.h"
 #include "report/prove_report.h"
+#include "report/scene_placement_report.h"
 #include "report/text_report.h"
 #include "check/check_polygon.h"
 
@@ -79,10 +80,17 @@ int run_mechanism_claims(const CheckClaimArgs& a, const std::string& scene_path,
     for (const MechanismDataClaim& c : claims) run.push_back(to_mechanism_claim(c));
     const MechanismCheck check = check_mechanism_claims(scene, run);
     const ClaimsStatus status = claims_status(check.claims, a.strict);
-    if (a.json)
-      out << json_text(to_json(check, status)) << "\n";
-    else
+    // Positions placed from dimensions are said, as `check` says them: the claims are judged
+    // exactly at the rationalised positions, so a claim about the dimensions themselves may fail
+    // there by less than the rationalisation.
+    if (a.json) {
+      nlohmann::json j = to_json(check, status);
+      j.update(scene_placement_json(scene));
+      out << json_text(j) << "\n";
+    } else {
+      write_scene_placement_text(out, scene);
       write_text(out, check, status);
+    }
     return status.exit_status;
   }
   if (a.count < 1 || a.count > 100000) throw InputError("<command line>", "--count", "must be between 1 and 100000");

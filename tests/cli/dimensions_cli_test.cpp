@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <string>
 
 #include "support/cli_run.h"
@@ -75,6 +76,22 @@ TEST(DimensionsCli, ASceneOfGivenPositionsSaysNothingInTextAndAllExactInJson) {
 TEST(DimensionsCli, OtherCommandsNoteTheRationalisedPositionsOnStandardError) {
   const test::CliRun r = test::run_cli({"curvature", bundled("dimensions_fourbar.yaml")});
   EXPECT_NE(r.err.find("note: " + bundled("dimensions_fourbar.yaml") + ": " + kStatement), std::string::npos) << r.err;
+}
+
+// check-claim --scene judges claims at the rationalised positions: a claim about the lengths
+// themselves failed there (|O2A|^2 = 1600 off by 1e-57) with nothing said about why.
+TEST(DimensionsCli, CheckClaimOnAScenePlacedFromDimensionsStatesTheRationalisedPositions) {
+  const std::string claims = ::testing::TempDir() + "dimension_claims.yaml";
+  {
+    std::ofstream(claims) << "claims:\n  - id: crank_length\n    source: test\n    statement: s\n"
+                             "    lhs: norm2(pos(A) - pos(O2))\n    rhs: 1600\n";
+  }
+  const test::CliRun text = test::run_cli({"check-claim", claims, "--scene", bundled("dimensions_fourbar.yaml")});
+  EXPECT_EQ(text.out.rfind(kStatement, 0), 0u) << "the statement comes first:\n" << text.out;
+  const test::CliRun json = test::run_cli({"check-claim", claims, "--scene", bundled("dimensions_fourbar.yaml"), "--json"});
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["rationalised"], kStatement) << json.out;
+  EXPECT_EQ(j["positions"]["A"]["exact"], false) << json.out;
 }
 
 // A slot is one joint to its reader (report/slot_rows.h): the statement names P, not the pin
