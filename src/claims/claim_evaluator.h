@@ -298,9 +298,6 @@ class ClaimEvaluator {
     return Scalar::poly(std::move(inverse));
   }
 
-  /// Evaluates one written divisor at each binding of its indices (see scalar(ClaimExpression)).
-  /// `possibly_zero` receives d * (1/d) for a floating-point d not distinguishable from 0: about 1,
-  /// with an unbounded error bound.
   static constexpr bool kKeepsWordValues = std::is_same_v<T, GiNaC::ex>;
 
   /// f(bindings) for every binding of a written part's indices (every j of a sum_j, every pair
@@ -333,6 +330,9 @@ class ClaimEvaluator {
     }
   }
 
+  /// Evaluates one written divisor at each binding of its indices (see scalar(ClaimExpression)).
+  /// `possibly_zero` receives d * (1/d) for a floating-point d not distinguishable from 0: about 1,
+  /// with an unbounded error bound.
   void written_divisor(const WrittenDivisor& d, const IndexBindings& b, std::optional<T>& possibly_zero) {
     at_each_binding(d.binding, b, [&](const IndexBindings& bb) {
       const RatePoly<T> v = scalar(d.expression, bb);

@@ -151,16 +151,17 @@ class Scanner {
   };
   const std::vector<RawIndexUse>& index_uses() const { return uses_; }
 
-  /// The divisors as written (text between two offsets, trimmed), with their binding.
-  struct RawDivisor {
+  /// A part of the text as written (a divisor, or a word with its index), with its binding.
+  struct RawWritten {
     std::string text;
     IndexBinding binding;
     std::string where;
   };
-  const std::vector<RawDivisor>& divisors() const { return divisors_; }
+  /// The divisors as written (the text between two offsets, trimmed), with their binding.
+  const std::vector<RawWritten>& divisors() const { return divisors_; }
 
   /// The quantity words as written (the word and its index), with their binding.
-  const std::vector<RawDivisor>& words() const { return words_; }
+  const std::vector<RawWritten>& words() const { return words_; }
 
  private:
   std::string where(size_t offset) const {
@@ -384,8 +385,8 @@ class Scanner {
   std::vector<Token> tokens_;
   IndexBinding binding_ = IndexBinding::None;
   std::vector<RawIndexUse> uses_;
-  std::vector<RawDivisor> divisors_;
-  std::vector<RawDivisor> words_;
+  std::vector<RawWritten> divisors_;
+  std::vector<RawWritten> words_;
 };
 
 // --- Words that evaluation never reads ------------------------------------------------------

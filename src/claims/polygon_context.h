@@ -194,8 +194,9 @@ class PolygonContext {
   }
 
   // Exact values are unique, so the four-bar's motion follows from one differentiation of its
-  // solution (GroundTruthEngine::terms) in place of two more evaluations of the motion (a tenth
-  // of an exact pentagon check, callgrind): omega_out = i omega_j with the velocity coefficient
+  // solution (GroundTruthEngine::terms) in place of two more evaluations of the motion (the
+  // four-bars were a tenth of an exact pentagon check, a third less now; callgrind, docs/
+  // performance.md): omega_out = i omega_j with the velocity coefficient
   // i, and omega-dot_out = c_dot omega-dot_j + c_sq omega_j^2 (a one-input four-bar has no other
   // term). Floating point keeps the three evaluations, whose bits and bounds its outputs print.
   FourBarTruth<T> solve_four_bar_from_terms(const Polygon<T>& fb, int j) const {
