@@ -88,10 +88,10 @@ TEST(DimensionsCli, CheckClaimOnAScenePlacedFromDimensionsStatesTheRationalisedP
   }
   const test::CliRun text = test::run_cli({"check-claim", claims, "--scene", bundled("dimensions_fourbar.yaml")});
   EXPECT_EQ(text.out.rfind(kStatement, 0), 0u) << "the statement comes first:\n" << text.out;
-  const test::CliRun json = test::run_cli({"check-claim", claims, "--scene", bundled("dimensions_fourbar.yaml"), "--json"});
-  const nlohmann::json j = nlohmann::json::parse(json.out);
-  EXPECT_EQ(j["rationalised"], kStatement) << json.out;
-  EXPECT_EQ(j["positions"]["A"]["exact"], false) << json.out;
+  const test::CliRun as_json = test::run_cli({"check-claim", claims, "--scene", bundled("dimensions_fourbar.yaml"), "--json"});
+  const nlohmann::json j = nlohmann::json::parse(as_json.out);
+  EXPECT_EQ(j["rationalised"], kStatement) << as_json.out;
+  EXPECT_EQ(j["positions"]["A"]["exact"], false) << as_json.out;
 }
 
 // A slot is one joint to its reader (report/slot_rows.h): the statement names P, not the pin
