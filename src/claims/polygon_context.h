@@ -175,7 +175,15 @@ class PolygonContext {
   // Four-bar j shares r_{n-2} and r_{n-1}, hence D, so it is at its dead centre too.
   FourBarTruth<T> solve_four_bar(int j) const {
     const Polygon<T> fb = make_four_bar_polygon(polygon, j);
-    if constexpr (GrowingExactNumber<T>) return solve_four_bar_from_terms(fb, j);
+    if constexpr (GrowingExactNumber<T>)
+      return solve_four_bar_from_terms(fb, j);
+    else
+      return solve_four_bar_by_motion(fb, j);
+  }
+
+  // The motion at unit input rates (the ratios), at the polygon's rates, and the term
+  // coefficients: three evaluations of the engine, whose bits and bounds floating point prints.
+  FourBarTruth<T> solve_four_bar_by_motion(const Polygon<T>& fb, int j) const {
     const T zero = from_int<T>(0), one = from_int<T>(1);
     FourBarTruth<T> t;
     const auto unit = attempt_unless_dead_centre<PolygonMotion<T>>(
